@@ -1,0 +1,1 @@
+//! Helpers shared by the benches: results/ paths and CSV writing (placeholder).

@@ -1,0 +1,2 @@
+//! ga-tracer (placeholder: being written).
+#![deny(missing_docs)]

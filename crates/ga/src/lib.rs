@@ -1,0 +1,2 @@
+//! Geometric algebra (placeholder: being written).
+#![deny(missing_docs)]

@@ -1,0 +1,367 @@
+//! The seam between the renderer and its ray-triangle back ends.
+//!
+//! This crate holds plain data ([`Ray`], [`Triangle`], [`Hit`]) and one trait,
+//! [`Intersector`]. The renderer (`render`) is generic over it and knows no back end; the back
+//! ends (`la-tracer` with glam, `ga-tracer` with geometric algebra) implement it and know no
+//! renderer. Nothing else lives here.
+//!
+//! ```
+//! use intersect::{Intersector, Ray, Triangle, TriangleHit};
+//!
+//! /// A toy back end: the plane z = 0 restricted to the triangle, rays along +z only.
+//! struct Toy;
+//!
+//! impl Intersector for Toy {
+//!     type Real = f64;
+//!     type Prim = Triangle<f64>;
+//!     type RayData = ();
+//!     const NAME: &'static str = "toy";
+//!
+//!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
+//!         *tri
+//!     }
+//!     fn prepare_ray(&self, _ray: &Ray<f64>) {}
+//!     fn intersect(&self, p: &Triangle<f64>, ray: &Ray<f64>, _: &(), t_max: f64)
+//!         -> Option<TriangleHit<f64>>
+//!     {
+//!         let t = -ray.origin[2] / ray.dir[2];
+//!         let [x, y] = [ray.origin[0], ray.origin[1]];
+//!         (t > 0.0 && t <= t_max && x >= 0.0 && y >= 0.0 && x + y <= 1.0)
+//!             .then_some(TriangleHit { t, u: x, v: y })
+//!     }
+//! }
+//!
+//! let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+//! let ray = Ray::new([0.25, 0.25, -1.0], [0.0, 0.0, 1.0]);
+//! let toy = Toy;
+//! let prim = toy.prepare(&tri);
+//! let hit = toy.intersect(&prim, &ray, &toy.prepare_ray(&ray), f64::INFINITY).unwrap();
+//! assert_eq!(hit.t, 1.0);
+//! assert!(toy.occludes(&prim, &ray, &(), 2.0));
+//! ```
+//!
+//! # Why the trait has this shape
+//!
+//! - **Static dispatch.** The renderer calls the kernel once per ray-triangle pair, hundreds of
+//!   millions of times a second. A `dyn` call there costs an indirect branch and, worse, stops
+//!   inlining of a kernel that is a few dozen instructions long. So the trait is used as a
+//!   generic bound: the back end is chosen once, at the top of a program, and everything below
+//!   is monomorphised for it.
+//! - **Per-triangle data is the back end's own** ([`Intersector::Prim`]). Moller-Trumbore wants
+//!   a vertex and two edges; the GA back end wants a bivector and an offset; the watertight
+//!   kernel wants plain vertices. The renderer builds one `Prim` per triangle at scene build
+//!   ([`Intersector::prepare`]) and stores them in BVH order, so the kernel reads only what it
+//!   needs and the cost of that precomputation is paid once, not per ray.
+//! - **Per-ray data is the back end's own too** ([`Intersector::RayData`]): the watertight
+//!   kernel's axis permutation and shear, or an inverse direction. It is computed once per ray
+//!   and passed to every triangle test of that ray. Back ends that need none use `()`.
+//! - **Closest hit and any hit.** [`Intersector::intersect`] returns the distance and
+//!   barycentrics of a hit within `(0, t_max]`; [`Intersector::occludes`] only says whether
+//!   there is one and may skip the barycentrics. The default `occludes` calls `intersect`.
+//! - **f32 and f64.** Every type is generic over [`Real`], implemented for `f32` and `f64`
+//!   only, so one renderer serves both precisions of every back end.
+//! - **Plain data across the seam.** Points are `[T; 3]`: no glam or GA type leaks through,
+//!   and neither back end depends on the other's vector types.
+
+#![deny(missing_docs)]
+
+use core::fmt::{Debug, Display};
+use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// A floating-point scalar: implemented for `f32` and `f64`.
+pub trait Real:
+    Copy
+    + Default
+    + PartialEq
+    + PartialOrd
+    + Debug
+    + Display
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+{
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// Positive infinity.
+    const INFINITY: Self;
+    /// Machine epsilon (distance from 1 to the next representable number).
+    const EPSILON: Self;
+    /// Number of bits in the significand, the implicit one included (24 or 53).
+    const MANTISSA_DIGITS: u32;
+    /// Converts from `f64`, rounding to nearest.
+    fn from_f64(x: f64) -> Self;
+    /// Converts to `f64` (exact).
+    fn to_f64(self) -> f64;
+    /// Absolute value.
+    #[must_use]
+    fn abs(self) -> Self;
+    /// Square root.
+    #[must_use]
+    fn sqrt(self) -> Self;
+    /// The smaller of two values (the other one if one is NaN).
+    #[must_use]
+    fn min(self, other: Self) -> Self;
+    /// The larger of two values (the other one if one is NaN).
+    #[must_use]
+    fn max(self, other: Self) -> Self;
+    /// Fused multiply-add `self * a + b` with one rounding.
+    #[must_use]
+    fn mul_add(self, a: Self, b: Self) -> Self;
+    /// Whether the value is neither infinite nor NaN.
+    fn is_finite(self) -> bool;
+    /// Whether the value is NaN.
+    fn is_nan(self) -> bool;
+}
+
+macro_rules! impl_real {
+    ($t:ident) => {
+        impl Real for $t {
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const INFINITY: Self = $t::INFINITY;
+            const EPSILON: Self = $t::EPSILON;
+            const MANTISSA_DIGITS: u32 = $t::MANTISSA_DIGITS;
+            #[inline(always)]
+            fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                $t::abs(self)
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $t::sqrt(self)
+            }
+            #[inline(always)]
+            fn min(self, other: Self) -> Self {
+                $t::min(self, other)
+            }
+            #[inline(always)]
+            fn max(self, other: Self) -> Self {
+                $t::max(self, other)
+            }
+            #[inline(always)]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                $t::mul_add(self, a, b)
+            }
+            #[inline(always)]
+            fn is_finite(self) -> bool {
+                $t::is_finite(self)
+            }
+            #[inline(always)]
+            fn is_nan(self) -> bool {
+                $t::is_nan(self)
+            }
+        }
+    };
+}
+impl_real!(f32);
+impl_real!(f64);
+
+/// A ray: `origin + t * dir` for `t > 0`. `dir` need not be normalised; `t` is measured in
+/// units of `dir`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Ray<T> {
+    /// The starting point.
+    pub origin: [T; 3],
+    /// The direction (not necessarily unit length).
+    pub dir: [T; 3],
+}
+
+impl<T: Real> Ray<T> {
+    /// A ray from `origin` along `dir`.
+    #[must_use]
+    pub const fn new(origin: [T; 3], dir: [T; 3]) -> Self {
+        Self { origin, dir }
+    }
+
+    /// The point at parameter `t`.
+    #[must_use]
+    pub fn at(&self, t: T) -> [T; 3] {
+        core::array::from_fn(|k| self.origin[k] + t * self.dir[k])
+    }
+
+    /// Converts to another precision (rounding to nearest).
+    #[must_use]
+    pub fn cast<U: Real>(&self) -> Ray<U> {
+        Ray { origin: cast3(self.origin), dir: cast3(self.dir) }
+    }
+}
+
+/// A triangle `(a, b, c)`, counter-clockwise seen from the side its geometric normal
+/// `(b - a) x (c - a)` points to.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Triangle<T> {
+    /// First vertex.
+    pub a: [T; 3],
+    /// Second vertex.
+    pub b: [T; 3],
+    /// Third vertex.
+    pub c: [T; 3],
+}
+
+impl<T: Real> Triangle<T> {
+    /// A triangle from its three vertices.
+    #[must_use]
+    pub const fn new(a: [T; 3], b: [T; 3], c: [T; 3]) -> Self {
+        Self { a, b, c }
+    }
+
+    /// The vertices as an array `[a, b, c]`.
+    #[must_use]
+    pub const fn vertices(&self) -> [[T; 3]; 3] {
+        [self.a, self.b, self.c]
+    }
+
+    /// The point with barycentric coordinates `(1 - u - v, u, v)`.
+    #[must_use]
+    pub fn point(&self, u: T, v: T) -> [T; 3] {
+        let w = T::ONE - u - v;
+        core::array::from_fn(|k| w * self.a[k] + u * self.b[k] + v * self.c[k])
+    }
+
+    /// Converts to another precision (rounding to nearest).
+    #[must_use]
+    pub fn cast<U: Real>(&self) -> Triangle<U> {
+        Triangle { a: cast3(self.a), b: cast3(self.b), c: cast3(self.c) }
+    }
+}
+
+/// What a kernel reports for one ray and one triangle: the distance along the ray and the
+/// barycentric coordinates of the hit point, `p = (1 - u - v) a + u b + v c`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TriangleHit<T> {
+    /// Ray parameter of the hit (in units of the ray's direction).
+    pub t: T,
+    /// Barycentric weight of vertex `b`.
+    pub u: T,
+    /// Barycentric weight of vertex `c`.
+    pub v: T,
+}
+
+/// A hit in a scene: a [`TriangleHit`] and the index of the triangle that was hit.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Hit<T> {
+    /// Ray parameter of the hit (in units of the ray's direction).
+    pub t: T,
+    /// Index of the triangle in the scene's triangle order.
+    pub prim: u32,
+    /// Barycentric weight of vertex `b`.
+    pub u: T,
+    /// Barycentric weight of vertex `c`.
+    pub v: T,
+}
+
+impl<T: Real> Hit<T> {
+    /// The scene hit made of a kernel's hit on triangle `prim`.
+    #[must_use]
+    pub const fn new(prim: u32, hit: TriangleHit<T>) -> Self {
+        Self { t: hit.t, prim, u: hit.u, v: hit.v }
+    }
+
+    /// Whether `self` is nearer than `other`. Ties in `t` (a ray through an edge or vertex
+    /// shared by several triangles) go to the lower triangle index, so that every traversal
+    /// order, brute force or any BVH, reports the same triangle.
+    #[must_use]
+    pub fn nearer_than(&self, other: &Self) -> bool {
+        self.t < other.t || (self.t == other.t && self.prim < other.prim)
+    }
+}
+
+/// A ray-triangle back end. See the [crate documentation](crate) for why it has this shape.
+///
+/// Contract for implementors:
+/// - `intersect` reports a hit exactly when the ray meets the triangle's closed interior at a
+///   parameter `t` with `0 < t <= t_max`; barycentrics satisfy `u >= 0`, `v >= 0`,
+///   `u + v <= 1` up to the kernel's documented rounding.
+/// - A degenerate (zero-area) triangle is never hit; no input, NaN included, makes a kernel
+///   panic or report a NaN `t`.
+/// - `occludes` agrees with `intersect(..).is_some()`.
+pub trait Intersector: Sync + Send {
+    /// The scalar type: `f32` or `f64`.
+    type Real: Real;
+    /// Per-triangle data, computed once per triangle by [`Intersector::prepare`].
+    type Prim: Send + Sync;
+    /// Per-ray data, computed once per ray by [`Intersector::prepare_ray`]; `()` if none.
+    type RayData: Copy + Send + Sync;
+    /// A short name for tables and command lines (`"la"`, `"ga"`, ...).
+    const NAME: &'static str;
+
+    /// Precomputes what the kernel needs of one triangle.
+    fn prepare(&self, tri: &Triangle<Self::Real>) -> Self::Prim;
+
+    /// Precomputes what the kernel needs of one ray.
+    fn prepare_ray(&self, ray: &Ray<Self::Real>) -> Self::RayData;
+
+    /// The hit of `ray` with the triangle, if any, with `0 < t <= t_max`.
+    fn intersect(
+        &self,
+        prim: &Self::Prim,
+        ray: &Ray<Self::Real>,
+        ray_data: &Self::RayData,
+        t_max: Self::Real,
+    ) -> Option<TriangleHit<Self::Real>>;
+
+    /// Whether `ray` hits the triangle with `0 < t <= t_max` (any-hit queries, shadows,
+    /// alpha masks). The default calls [`Intersector::intersect`].
+    #[inline(always)]
+    fn occludes(
+        &self,
+        prim: &Self::Prim,
+        ray: &Ray<Self::Real>,
+        ray_data: &Self::RayData,
+        t_max: Self::Real,
+    ) -> bool {
+        self.intersect(prim, ray, ray_data, t_max).is_some()
+    }
+}
+
+fn cast3<T: Real, U: Real>(p: [T; 3]) -> [U; 3] {
+    p.map(|x| U::from_f64(x.to_f64()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ties_go_to_the_lower_index() {
+        let a = Hit { t: 1.0, prim: 3, u: 0.0, v: 0.0 };
+        let b = Hit { t: 1.0, prim: 7, u: 0.0, v: 0.0 };
+        let c = Hit { t: 0.5, prim: 9, u: 0.0, v: 0.0 };
+        assert!(a.nearer_than(&b));
+        assert!(!b.nearer_than(&a));
+        assert!(c.nearer_than(&a));
+        assert!(!a.nearer_than(&a));
+    }
+
+    #[test]
+    fn triangle_point_uses_barycentrics_of_b_and_c() {
+        let t = Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
+        assert_eq!(t.point(0.5, 0.25), [1.0, 1.0, 0.0]);
+        assert_eq!(t.point(0.0, 0.0), t.a);
+    }
+
+    #[test]
+    fn ray_at_and_cast() {
+        let r = Ray::new([1.0f64, 2.0, 3.0], [0.0, 0.0, -1.0]);
+        assert_eq!(r.at(2.0), [1.0, 2.0, 1.0]);
+        let r32: Ray<f32> = r.cast();
+        assert_eq!(r32.origin, [1.0f32, 2.0, 3.0]);
+    }
+}

@@ -1,0 +1,2 @@
+//! la-tracer (placeholder: being written).
+#![deny(missing_docs)]

@@ -1,0 +1,2 @@
+//! render (placeholder: being written).
+#![deny(missing_docs)]
