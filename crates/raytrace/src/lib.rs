@@ -1,1 +1,2 @@
 //! Shared glue for the command-line programs (placeholder).
+pub mod scenes;
