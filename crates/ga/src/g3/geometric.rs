@@ -1,0 +1,527 @@
+//! The geometric product `*` between every pair of G3 types.
+//!
+//! Each kernel is the bilinear expansion of its two operands over the Cayley table below (row
+//! times column, with `e31 = e3 e1`), keeping only the terms whose blades both types hold, so
+//! no zero grade is ever multiplied. The result is the smallest type holding every grade that
+//! can appear: vector times vector is a [`Rotor`] (scalar plus bivector), vector times bivector
+//! is odd (vector plus trivector) and so a [`Multivector`]. The tests in `tests/` compare every
+//! kernel against the generic bitmask algebra in [`crate::reference`].
+//!
+//! |  ·   |  1   |  e1  |  e2  |  e3  | e12  | e23  | e31  | e123 |
+//! |------|------|------|------|------|------|------|------|------|
+//! | 1    |   1  |  e1  |  e2  |  e3  |  e12 |  e23 |  e31 | e123 |
+//! | e1   |  e1  |   1  |  e12 | -e31 |  e2  | e123 | -e3  |  e23 |
+//! | e2   |  e2  | -e12 |   1  |  e23 | -e1  |  e3  | e123 |  e31 |
+//! | e3   |  e3  |  e31 | -e23 |   1  | e123 | -e2  |  e1  |  e12 |
+//! | e12  |  e12 | -e2  |  e1  | e123 |  -1  | -e31 |  e23 | -e3  |
+//! | e23  |  e23 | e123 | -e3  |  e2  |  e31 |  -1  | -e12 | -e1  |
+//! | e31  |  e31 |  e3  | e123 | -e1  | -e23 |  e12 |  -1  | -e2  |
+//! | e123 | e123 |  e23 |  e31 |  e12 | -e3  | -e1  | -e2  |  -1  |
+//!
+//! (Report figure 2.5 prints this table transposed: its entry in row `e1`, column `e2` is
+//! `-e12`, which is `e2 e1`; see [`crate::errata`].)
+
+// The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel is a sum of
+// products of coefficients, which is what clippy's heuristic flags.
+#![allow(clippy::suspicious_arithmetic_impl)]
+
+use core::ops::{Mul, MulAssign};
+
+use crate::Scalar;
+use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
+
+/// Geometric product `Vector * Vector -> Rotor`.
+impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Vector<T>) -> Rotor<T> {
+        // Blade products: e1 e1 = 1, e1 e2 = e12, e1 e3 = -e31, e2 e1 = -e12, e2 e2 = 1,
+        //   e2 e3 = e23, e3 e1 = e31, e3 e2 = -e23, e3 e3 = 1
+        let a = self;
+        Rotor {
+            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
+            e12: a.e1 * b.e2 - a.e2 * b.e1,
+            e23: a.e2 * b.e3 - a.e3 * b.e2,
+            e31: -a.e1 * b.e3 + a.e3 * b.e1,
+        }
+    }
+}
+
+/// Geometric product `Vector * Bivector -> Multivector`.
+impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Bivector<T>) -> Multivector<T> {
+        // Blade products: e1 e12 = e2, e1 e23 = e123, e1 e31 = -e3, e2 e12 = -e1, e2 e23 = e3,
+        //   e2 e31 = e123, e3 e12 = e123, e3 e23 = -e2, e3 e31 = e1
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: -a.e2 * b.e12 + a.e3 * b.e31,
+            e2: a.e1 * b.e12 - a.e3 * b.e23,
+            e3: -a.e1 * b.e31 + a.e2 * b.e23,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Vector * Trivector -> Bivector`.
+impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
+    type Output = Bivector<T>;
+    #[inline]
+    fn mul(self, b: Trivector<T>) -> Bivector<T> {
+        // Blade products: e1 e123 = e23, e2 e123 = e31, e3 e123 = e12
+        let a = self;
+        Bivector { e12: a.e3 * b.e123, e23: a.e1 * b.e123, e31: a.e2 * b.e123 }
+    }
+}
+
+/// Geometric product `Vector * Rotor -> Multivector`.
+impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Multivector<T> {
+        // Blade products: e1 s = e1, e1 e12 = e2, e1 e23 = e123, e1 e31 = -e3, e2 s = e2,
+        //   e2 e12 = -e1, e2 e23 = e3, e2 e31 = e123, e3 s = e3, e3 e12 = e123, e3 e23 = -e2,
+        //   e3 e31 = e1
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
+            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
+            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Vector * Multivector -> Multivector`.
+impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Multivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
+            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
+            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
+            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
+            e12: a.e1 * b.e2 - a.e2 * b.e1 + a.e3 * b.e123,
+            e23: a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2,
+            e31: -a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1,
+            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Bivector * Vector -> Multivector`.
+impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Vector<T>) -> Multivector<T> {
+        // Blade products: e12 e1 = -e2, e12 e2 = e1, e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3,
+        //   e23 e3 = e2, e31 e1 = e3, e31 e2 = e123, e31 e3 = -e1
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: a.e12 * b.e2 - a.e31 * b.e3,
+            e2: -a.e12 * b.e1 + a.e23 * b.e3,
+            e3: -a.e23 * b.e2 + a.e31 * b.e1,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        }
+    }
+}
+
+/// Geometric product `Bivector * Bivector -> Rotor`.
+impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Bivector<T>) -> Rotor<T> {
+        // Blade products: e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 e12 = e31,
+        //   e23 e23 = -1, e23 e31 = -e12, e31 e12 = -e23, e31 e23 = e12, e31 e31 = -1
+        let a = self;
+        Rotor {
+            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e12: -a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.e12 * b.e31 - a.e31 * b.e12,
+            e31: -a.e12 * b.e23 + a.e23 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Bivector * Trivector -> Vector`.
+impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn mul(self, b: Trivector<T>) -> Vector<T> {
+        // Blade products: e12 e123 = -e3, e23 e123 = -e1, e31 e123 = -e2
+        let a = self;
+        Vector { e1: -a.e23 * b.e123, e2: -a.e31 * b.e123, e3: -a.e12 * b.e123 }
+    }
+}
+
+/// Geometric product `Bivector * Rotor -> Rotor`.
+impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Rotor<T> {
+        // Blade products: e12 s = e12, e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 s = e23,
+        //   e23 e12 = e31, e23 e23 = -1, e23 e31 = -e12, e31 s = e31, e31 e12 = -e23,
+        //   e31 e23 = e12, e31 e31 = -1
+        let a = self;
+        Rotor {
+            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e12: a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
+            e31: -a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+        }
+    }
+}
+
+/// Geometric product `Bivector * Multivector -> Multivector`.
+impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Multivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e1: a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
+            e2: -a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
+            e3: -a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
+            e12: a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
+            e31: -a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        }
+    }
+}
+
+/// Geometric product `Trivector * Vector -> Bivector`.
+impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
+    type Output = Bivector<T>;
+    #[inline]
+    fn mul(self, b: Vector<T>) -> Bivector<T> {
+        // Blade products: e123 e1 = e23, e123 e2 = e31, e123 e3 = e12
+        let a = self;
+        Bivector { e12: a.e123 * b.e3, e23: a.e123 * b.e1, e31: a.e123 * b.e2 }
+    }
+}
+
+/// Geometric product `Trivector * Bivector -> Vector`.
+impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn mul(self, b: Bivector<T>) -> Vector<T> {
+        // Blade products: e123 e12 = -e3, e123 e23 = -e1, e123 e31 = -e2
+        let a = self;
+        Vector { e1: -a.e123 * b.e23, e2: -a.e123 * b.e31, e3: -a.e123 * b.e12 }
+    }
+}
+
+/// Geometric product `Trivector * Trivector -> scalar`.
+impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
+    type Output = T;
+    #[inline]
+    fn mul(self, b: Trivector<T>) -> T {
+        // Blade products: e123 e123 = -1
+        let a = self;
+        -a.e123 * b.e123
+    }
+}
+
+/// Geometric product `Trivector * Rotor -> Multivector`.
+impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Multivector<T> {
+        // Blade products: e123 s = e123, e123 e12 = -e3, e123 e23 = -e1, e123 e31 = -e2
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: -a.e123 * b.e23,
+            e2: -a.e123 * b.e31,
+            e3: -a.e123 * b.e12,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.e123 * b.s,
+        }
+    }
+}
+
+/// Geometric product `Trivector * Multivector -> Multivector`.
+impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Multivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: -a.e123 * b.e123,
+            e1: -a.e123 * b.e23,
+            e2: -a.e123 * b.e31,
+            e3: -a.e123 * b.e12,
+            e12: a.e123 * b.e3,
+            e23: a.e123 * b.e1,
+            e31: a.e123 * b.e2,
+            e123: a.e123 * b.s,
+        }
+    }
+}
+
+/// Geometric product `Rotor * Vector -> Multivector`.
+impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Vector<T>) -> Multivector<T> {
+        // Blade products: s e1 = e1, s e2 = e2, s e3 = e3, e12 e1 = -e2, e12 e2 = e1,
+        //   e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3, e23 e3 = e2, e31 e1 = e3, e31 e2 = e123,
+        //   e31 e3 = -e1
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
+            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
+            e3: a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        }
+    }
+}
+
+/// Geometric product `Rotor * Bivector -> Rotor`.
+impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Bivector<T>) -> Rotor<T> {
+        // Blade products: s e12 = e12, s e23 = e23, s e31 = e31, e12 e12 = -1, e12 e23 = -e31,
+        //   e12 e31 = e23, e23 e12 = e31, e23 e23 = -1, e23 e31 = -e12, e31 e12 = -e23,
+        //   e31 e23 = e12, e31 e31 = -1
+        let a = self;
+        Rotor {
+            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e12: a.s * b.e12 - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12,
+            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Rotor * Trivector -> Multivector`.
+impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Trivector<T>) -> Multivector<T> {
+        // Blade products: s e123 = e123, e12 e123 = -e3, e23 e123 = -e1, e31 e123 = -e2
+        let a = self;
+        Multivector {
+            s: T::ZERO,
+            e1: -a.e23 * b.e123,
+            e2: -a.e31 * b.e123,
+            e3: -a.e12 * b.e123,
+            e12: T::ZERO,
+            e23: T::ZERO,
+            e31: T::ZERO,
+            e123: a.s * b.e123,
+        }
+    }
+}
+
+/// Geometric product `Rotor * Rotor -> Rotor`.
+impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Rotor<T> {
+        // Blade products: s s = 1, s e12 = e12, s e23 = e23, s e31 = e31, e12 s = e12,
+        //   e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 s = e23, e23 e12 = e31,
+        //   e23 e23 = -1, e23 e31 = -e12, e31 s = e31, e31 e12 = -e23, e31 e23 = e12,
+        //   e31 e31 = -1
+        let a = self;
+        Rotor {
+            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
+            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+        }
+    }
+}
+
+/// Geometric product `Rotor * Multivector -> Multivector`.
+impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Multivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e1: a.s * b.e1 + a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
+            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
+            e3: a.s * b.e3 - a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
+            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
+            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+            e123: a.s * b.e123 + a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        }
+    }
+}
+
+/// Geometric product `Multivector * Vector -> Multivector`.
+impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Vector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
+            e1: a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
+            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
+            e3: a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
+            e12: a.e1 * b.e2 - a.e2 * b.e1 + a.e123 * b.e3,
+            e23: a.e2 * b.e3 - a.e3 * b.e2 + a.e123 * b.e1,
+            e31: -a.e1 * b.e3 + a.e3 * b.e1 + a.e123 * b.e2,
+            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        }
+    }
+}
+
+/// Geometric product `Multivector * Bivector -> Multivector`.
+impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Bivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e1: -a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
+            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e123 * b.e31,
+            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e123 * b.e12,
+            e12: a.s * b.e12 - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12,
+            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12,
+            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        }
+    }
+}
+
+/// Geometric product `Multivector * Trivector -> Multivector`.
+impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Trivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: -a.e123 * b.e123,
+            e1: -a.e23 * b.e123,
+            e2: -a.e31 * b.e123,
+            e3: -a.e12 * b.e123,
+            e12: a.e3 * b.e123,
+            e23: a.e1 * b.e123,
+            e31: a.e2 * b.e123,
+            e123: a.s * b.e123,
+        }
+    }
+}
+
+/// Geometric product `Multivector * Rotor -> Multivector`.
+impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
+            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
+            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23 - a.e123 * b.e31,
+            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s - a.e123 * b.e12,
+            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
+            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
+            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12 + a.e123 * b.s,
+        }
+    }
+}
+
+/// Geometric product `Multivector * Multivector -> Multivector`.
+impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
+    type Output = Multivector<T>;
+    #[inline]
+    fn mul(self, b: Multivector<T>) -> Multivector<T> {
+        // The Cayley-table terms (module docs) whose factors both types hold.
+        let a = self;
+        Multivector {
+            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
+                - a.e12 * b.e12
+                - a.e23 * b.e23
+                - a.e31 * b.e31
+                - a.e123 * b.e123,
+            e1: a.s * b.e1 + a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2
+                - a.e23 * b.e123
+                - a.e31 * b.e3
+                - a.e123 * b.e23,
+            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23 - a.e12 * b.e1 + a.e23 * b.e3
+                - a.e31 * b.e123
+                - a.e123 * b.e31,
+            e3: a.s * b.e3 - a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s
+                - a.e12 * b.e123
+                - a.e23 * b.e2
+                + a.e31 * b.e1
+                - a.e123 * b.e12,
+            e12: a.s * b.e12 + a.e1 * b.e2 - a.e2 * b.e1 + a.e3 * b.e123 + a.e12 * b.s
+                - a.e23 * b.e31
+                + a.e31 * b.e23
+                + a.e123 * b.e3,
+            e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2
+                + a.e12 * b.e31
+                + a.e23 * b.s
+                - a.e31 * b.e12
+                + a.e123 * b.e1,
+            e31: a.s * b.e31 - a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1 - a.e12 * b.e23
+                + a.e23 * b.e12
+                + a.e31 * b.s
+                + a.e123 * b.e2,
+            e123: a.s * b.e123
+                + a.e1 * b.e23
+                + a.e2 * b.e31
+                + a.e3 * b.e12
+                + a.e12 * b.e3
+                + a.e23 * b.e1
+                + a.e31 * b.e2
+                + a.e123 * b.s,
+        }
+    }
+}
+
+impl<T: Scalar> MulAssign for Rotor<T> {
+    /// `self = self * rhs`: the composite applies `rhs` first, then the old `self`.
+    #[inline]
+    fn mul_assign(&mut self, rhs: Self) {
+        *self = *self * rhs;
+    }
+}
+
+impl<T: Scalar> MulAssign for Multivector<T> {
+    /// `self = self * rhs`.
+    #[inline]
+    fn mul_assign(&mut self, rhs: Self) {
+        *self = *self * rhs;
+    }
+}

@@ -1,0 +1,156 @@
+//! The vector-space operations every G3 type shares: `+`, `-`, negation, scaling by a scalar,
+//! and formatting in the report's style.
+//!
+//! These are component-wise on every type, so one small macro writes them; the products, which
+//! differ per pair of types, are written out by hand in their own files.
+
+use core::fmt;
+
+use crate::Scalar;
+
+/// Writes `terms` as the report writes a multivector: `1 + 2e1 - 0.5e23`.
+///
+/// Zero terms are omitted and an all-zero value prints as `0`. A unit coefficient on a blade
+/// is printed (`1e12`) so that every term reads the same way; the formatter's precision, if
+/// any, applies to each coefficient (`{:.2}`).
+pub(crate) fn write_terms<T: Scalar>(
+    f: &mut fmt::Formatter<'_>,
+    terms: &[(T, &str)],
+) -> fmt::Result {
+    let mut first = true;
+    for &(c, blade) in terms {
+        // NaN is not zero, so it is printed rather than silently dropped.
+        if c == T::ZERO {
+            continue;
+        }
+        let negative = c < T::ZERO;
+        let magnitude = if negative { -c } else { c };
+        match (first, negative) {
+            (true, true) => f.write_str("-")?,
+            (true, false) => {}
+            (false, true) => f.write_str(" - ")?,
+            (false, false) => f.write_str(" + ")?,
+        }
+        match f.precision() {
+            Some(p) => write!(f, "{magnitude:.p$}{blade}")?,
+            None => write!(f, "{magnitude}{blade}")?,
+        }
+        first = false;
+    }
+    if first {
+        f.write_str("0")?;
+    }
+    Ok(())
+}
+
+/// Implements the component-wise operations for a struct of named scalar fields:
+/// `Add`, `Sub`, `Neg`, `Mul<T>`, `Div<T>`, their assigning forms, `scalar * value` for `f32`
+/// and `f64`, `Display` (report style) and the helpers `abs_diff_eq`, `is_finite`, `max_abs`.
+macro_rules! impl_linear {
+    ($ty:ident { $($field:ident : $blade:literal),+ }) => {
+        impl<T: $crate::Scalar> core::ops::Add for $ty<T> {
+            type Output = Self;
+            #[inline]
+            fn add(self, rhs: Self) -> Self {
+                Self { $($field: self.$field + rhs.$field),+ }
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::Sub for $ty<T> {
+            type Output = Self;
+            #[inline]
+            fn sub(self, rhs: Self) -> Self {
+                Self { $($field: self.$field - rhs.$field),+ }
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::Neg for $ty<T> {
+            type Output = Self;
+            #[inline]
+            fn neg(self) -> Self {
+                Self { $($field: -self.$field),+ }
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::Mul<T> for $ty<T> {
+            type Output = Self;
+            #[inline]
+            fn mul(self, rhs: T) -> Self {
+                Self { $($field: self.$field * rhs),+ }
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::Div<T> for $ty<T> {
+            type Output = Self;
+            /// Divides every component by `rhs` (one reciprocal, then multiplies).
+            #[inline]
+            #[allow(clippy::suspicious_arithmetic_impl)]
+            fn div(self, rhs: T) -> Self {
+                self * rhs.recip()
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::AddAssign for $ty<T> {
+            #[inline]
+            fn add_assign(&mut self, rhs: Self) {
+                *self = *self + rhs;
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::SubAssign for $ty<T> {
+            #[inline]
+            fn sub_assign(&mut self, rhs: Self) {
+                *self = *self - rhs;
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::MulAssign<T> for $ty<T> {
+            #[inline]
+            fn mul_assign(&mut self, rhs: T) {
+                *self = *self * rhs;
+            }
+        }
+        impl<T: $crate::Scalar> core::ops::DivAssign<T> for $ty<T> {
+            #[inline]
+            fn div_assign(&mut self, rhs: T) {
+                *self = *self / rhs;
+            }
+        }
+        impl core::ops::Mul<$ty<f32>> for f32 {
+            type Output = $ty<f32>;
+            #[inline]
+            fn mul(self, rhs: $ty<f32>) -> $ty<f32> {
+                rhs * self
+            }
+        }
+        impl core::ops::Mul<$ty<f64>> for f64 {
+            type Output = $ty<f64>;
+            #[inline]
+            fn mul(self, rhs: $ty<f64>) -> $ty<f64> {
+                rhs * self
+            }
+        }
+        impl<T: $crate::Scalar> core::fmt::Display for $ty<T> {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                $crate::g3::linear::write_terms(f, &[$((self.$field, $blade)),+])
+            }
+        }
+        impl<T: $crate::Scalar> $ty<T> {
+            /// Whether every component differs from `other`'s by at most `eps`.
+            #[must_use]
+            #[inline]
+            pub fn abs_diff_eq(self, other: Self, eps: T) -> bool {
+                true $(&& (self.$field - other.$field).abs() <= eps)+
+            }
+            /// Whether every component is finite (neither infinite nor NaN).
+            #[must_use]
+            #[inline]
+            pub fn is_finite(self) -> bool {
+                true $(&& self.$field.is_finite())+
+            }
+            /// The largest absolute value among the components.
+            #[must_use]
+            #[inline]
+            pub fn max_abs(self) -> T {
+                let mut m = T::ZERO;
+                $(m = m.max(self.$field.abs());)+
+                m
+            }
+        }
+    };
+}
+
+pub(crate) use impl_linear;

@@ -1,0 +1,352 @@
+//! [`Multivector`]: the general element of G3, eight coefficients.
+
+use crate::Scalar;
+use crate::g3::linear::impl_linear;
+use crate::g3::{Bivector, Rotor, Trivector, Vector};
+
+/// A general multivector of G3: `s + e1·e1 + e2·e2 + e3·e3 + e12·e12 + e23·e23 + e31·e31 +
+/// e123·e123`, in the report's basis order.
+///
+/// Every product is defined for it, so it is the type to fall back on (and the one tests compare
+/// against). The grade types ([`Vector`], [`Bivector`], [`Trivector`], [`Rotor`]) are smaller
+/// and faster where the grades are known.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
+pub struct Multivector<T> {
+    pub(crate) s: T,
+    pub(crate) e1: T,
+    pub(crate) e2: T,
+    pub(crate) e3: T,
+    pub(crate) e12: T,
+    pub(crate) e23: T,
+    pub(crate) e31: T,
+    pub(crate) e123: T,
+}
+
+impl_linear!(Multivector {
+    s: "",
+    e1: "e1",
+    e2: "e2",
+    e3: "e3",
+    e12: "e12",
+    e23: "e23",
+    e31: "e31",
+    e123: "e123"
+});
+
+/// The basis blade names in the report's order, as printed by `Display`.
+pub const BASIS: [&str; 8] = ["1", "e1", "e2", "e3", "e12", "e23", "e31", "e123"];
+
+/// The grade of each basis blade, in the report's order.
+pub const GRADES: [usize; 8] = [0, 1, 1, 1, 2, 2, 2, 3];
+
+impl<T: Scalar> Multivector<T> {
+    /// Zero.
+    pub const ZERO: Self = Self::new_const([T::ZERO; 8]);
+    /// The scalar 1.
+    pub const ONE: Self = Self::basis(0);
+    /// The basis vector `e1`.
+    pub const E1: Self = Self::basis(1);
+    /// The basis vector `e2`.
+    pub const E2: Self = Self::basis(2);
+    /// The basis vector `e3`.
+    pub const E3: Self = Self::basis(3);
+    /// The basis bivector `e12 = e1 e2`.
+    pub const E12: Self = Self::basis(4);
+    /// The basis bivector `e23 = e2 e3`.
+    pub const E23: Self = Self::basis(5);
+    /// The basis bivector `e31 = e3 e1`.
+    pub const E31: Self = Self::basis(6);
+    /// The unit pseudoscalar `I = e123 = e1 e2 e3`.
+    pub const E123: Self = Self::basis(7);
+
+    const fn new_const(a: [T; 8]) -> Self {
+        Self { s: a[0], e1: a[1], e2: a[2], e3: a[3], e12: a[4], e23: a[5], e31: a[6], e123: a[7] }
+    }
+
+    /// The `k`-th basis blade of the report's order `1, e1, e2, e3, e12, e23, e31, e123`.
+    ///
+    /// # Panics
+    ///
+    /// If `k >= 8`.
+    #[must_use]
+    pub const fn basis(k: usize) -> Self {
+        assert!(k < 8, "G3 has 8 basis blades");
+        let mut a = [T::ZERO; 8];
+        a[k] = T::ONE;
+        Self::new_const(a)
+    }
+
+    /// From all eight coefficients, in the report's order.
+    #[allow(clippy::too_many_arguments)]
+    #[must_use]
+    #[inline]
+    pub const fn new(s: T, e1: T, e2: T, e3: T, e12: T, e23: T, e31: T, e123: T) -> Self {
+        Self { s, e1, e2, e3, e12, e23, e31, e123 }
+    }
+
+    /// From `[s, e1, e2, e3, e12, e23, e31, e123]` (the report's basis order).
+    #[must_use]
+    #[inline]
+    pub const fn from_array(a: [T; 8]) -> Self {
+        Self::new_const(a)
+    }
+
+    /// As `[s, e1, e2, e3, e12, e23, e31, e123]` (the report's basis order).
+    #[must_use]
+    #[inline]
+    pub const fn to_array(self) -> [T; 8] {
+        [self.s, self.e1, self.e2, self.e3, self.e12, self.e23, self.e31, self.e123]
+    }
+
+    /// The scalar `x` as a multivector.
+    #[must_use]
+    #[inline]
+    pub const fn scalar(x: T) -> Self {
+        let mut m = Self::new_const([T::ZERO; 8]);
+        m.s = x;
+        m
+    }
+
+    /// The scalar coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn s(self) -> T {
+        self.s
+    }
+    /// The `e1` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e1(self) -> T {
+        self.e1
+    }
+    /// The `e2` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e2(self) -> T {
+        self.e2
+    }
+    /// The `e3` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e3(self) -> T {
+        self.e3
+    }
+    /// The `e12` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e12(self) -> T {
+        self.e12
+    }
+    /// The `e23` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e23(self) -> T {
+        self.e23
+    }
+    /// The `e31` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e31(self) -> T {
+        self.e31
+    }
+    /// The `e123` coefficient.
+    #[must_use]
+    #[inline]
+    pub const fn e123(self) -> T {
+        self.e123
+    }
+
+    /// The grade-1 part.
+    #[must_use]
+    #[inline]
+    pub const fn vector_part(self) -> Vector<T> {
+        Vector::new(self.e1, self.e2, self.e3)
+    }
+    /// The grade-2 part.
+    #[must_use]
+    #[inline]
+    pub const fn bivector_part(self) -> Bivector<T> {
+        Bivector::new(self.e12, self.e23, self.e31)
+    }
+    /// The grade-3 part.
+    #[must_use]
+    #[inline]
+    pub const fn trivector_part(self) -> Trivector<T> {
+        Trivector::new(self.e123)
+    }
+    /// The even part (grades 0 and 2).
+    #[must_use]
+    #[inline]
+    pub const fn even_part(self) -> Rotor<T> {
+        Rotor::new(self.s, self.e12, self.e23, self.e31)
+    }
+    /// The odd part (grades 1 and 3).
+    #[must_use]
+    #[inline]
+    pub fn odd_part(self) -> Self {
+        Self::new(T::ZERO, self.e1, self.e2, self.e3, T::ZERO, T::ZERO, T::ZERO, self.e123)
+    }
+
+    /// The grade-`k` part `⟨A⟩_k` (zero for `k > 3`).
+    #[must_use]
+    #[inline]
+    pub fn grade(self, k: usize) -> Self {
+        let mut a = self.to_array();
+        for (c, g) in a.iter_mut().zip(GRADES) {
+            if g != k {
+                *c = T::ZERO;
+            }
+        }
+        Self::from_array(a)
+    }
+
+    /// The reverse `Ã`: the order of the vector factors of each blade reversed, which negates
+    /// grades 2 and 3 (report 2.3.1).
+    #[must_use]
+    #[inline]
+    pub fn reverse(self) -> Self {
+        self.signed(1, 1, -1, -1)
+    }
+
+    /// The grade involution `Â`: every vector negated, which negates grades 1 and 3.
+    #[must_use]
+    #[inline]
+    pub fn grade_involution(self) -> Self {
+        self.signed(1, -1, 1, -1)
+    }
+
+    /// The Clifford conjugate `Ā`, the reverse of the grade involution: negates grades 1 and 2.
+    #[must_use]
+    #[inline]
+    pub fn conjugate(self) -> Self {
+        self.signed(1, -1, -1, 1)
+    }
+
+    /// Multiplies grade `k` by the `k`-th sign.
+    #[inline]
+    fn signed(self, g0: i8, g1: i8, g2: i8, g3: i8) -> Self {
+        let f = |x: T, g: i8| if g < 0 { -x } else { x };
+        Self::new(
+            f(self.s, g0),
+            f(self.e1, g1),
+            f(self.e2, g1),
+            f(self.e3, g1),
+            f(self.e12, g2),
+            f(self.e23, g2),
+            f(self.e31, g2),
+            f(self.e123, g3),
+        )
+    }
+
+    /// The dual `A* = A I⁻¹ = -A I` (report 2.3.3).
+    ///
+    /// Blade by blade: `1* = -e123`, `e1* = -e23`, `e2* = -e31`, `e3* = -e12`, `e12* = e3`,
+    /// `e23* = e1`, `e31* = e2`, `e123* = 1`.
+    #[must_use]
+    #[inline]
+    pub fn dual(self) -> Self {
+        Self::new(self.e123, self.e23, self.e31, self.e12, -self.e3, -self.e1, -self.e2, -self.s)
+    }
+
+    /// The inverse of [`dual`](Multivector::dual): `A I`, so `a.dual().undual() == a`.
+    #[must_use]
+    #[inline]
+    pub fn undual(self) -> Self {
+        Self::new(-self.e123, -self.e23, -self.e31, -self.e12, self.e3, self.e1, self.e2, self.s)
+    }
+
+    /// `|A|² = ⟨A Ã⟩₀`, the sum of the squares of the eight coefficients (the metric is
+    /// Euclidean and the basis orthonormal).
+    #[must_use]
+    #[inline]
+    pub fn norm_squared(self) -> T {
+        let a = self.to_array();
+        let mut sum = T::ZERO;
+        for x in a {
+            sum = x.mul_add(x, sum);
+        }
+        sum
+    }
+
+    /// `|A|`.
+    #[must_use]
+    #[inline]
+    pub fn norm(self) -> T {
+        self.norm_squared().sqrt()
+    }
+
+    /// `A / |A|`. Zero gives NaN components; see [`Multivector::try_normalize`].
+    #[must_use]
+    #[inline]
+    pub fn normalize(self) -> Self {
+        self * self.norm().recip()
+    }
+
+    /// `A / |A|`, or `None` when `|A|` is zero or the result is not finite.
+    #[must_use]
+    #[inline]
+    pub fn try_normalize(self) -> Option<Self> {
+        let r = self.norm().recip();
+        (r.is_finite() && r > T::ZERO).then(|| self * r)
+    }
+
+    /// The inverse `A⁻¹` of any invertible multivector (closed form for G3), or `None` when `A`
+    /// has no inverse or the result would not be finite.
+    ///
+    /// `A Ā` (with `Ā` the [Clifford conjugate](Multivector::conjugate)) always lies in the
+    /// centre `{1, I}` of G3, which behaves as the complex numbers (`I² = -1`). So
+    /// `z = A Ā = α + β I`, and `A⁻¹ = Ā z⁻¹` with `z⁻¹ = (α - β I) / (α² + β²)`. `A` is
+    /// invertible exactly when `z ≠ 0`. Unlike [`versor_inverse`](Multivector::versor_inverse)
+    /// this is valid for every multivector, e.g. `1 + e1` (`z = 0`: not invertible) or
+    /// `1 + e12 + e123`.
+    #[must_use]
+    pub fn inverse(self) -> Option<Self> {
+        let (s, e1, e2, e3) = (self.s, self.e1, self.e2, self.e3);
+        let (e12, e23, e31, e123) = (self.e12, self.e23, self.e31, self.e123);
+        // ⟨A Ā⟩₀ = s² - |v|² + |B|² - t²; ⟨A Ā⟩₃ = 2 (s t - v·B*), with B* = (e23, e31, e12).
+        let alpha =
+            s * s - e1 * e1 - e2 * e2 - e3 * e3 + e12 * e12 + e23 * e23 + e31 * e31 - e123 * e123;
+        let beta = T::TWO * (s * e123 - e1 * e23 - e2 * e31 - e3 * e12);
+        let d = (alpha * alpha + beta * beta).recip();
+        if !(d.is_finite() && d > T::ZERO) {
+            return None;
+        }
+        // Ā (c + d I) with c = α/|z|², d = -β/|z|²; Ā = (s, -v, -B, t), and X I maps
+        // 1 → e123, e1 → e23, e2 → e31, e3 → e12, e12 → -e3, e23 → -e1, e31 → -e2, e123 → -1.
+        let (c, d) = (alpha * d, -beta * d);
+        let inv = Self::new(
+            s * c - e123 * d,
+            -e1 * c + e23 * d,
+            -e2 * c + e31 * d,
+            -e3 * c + e12 * d,
+            -e12 * c - e3 * d,
+            -e23 * c - e1 * d,
+            -e31 * c - e2 * d,
+            e123 * c + s * d,
+        );
+        inv.is_finite().then_some(inv)
+    }
+
+    /// The versor inverse `Ã / (A Ã)`, valid only when `A` is a versor (a product of
+    /// invertible vectors), for which `A Ã = |A|²` is a scalar (report 2.3.2). Cheaper than
+    /// [`inverse`](Multivector::inverse); for a non-versor the result is simply wrong.
+    ///
+    /// Returns `None` when `|A|` is zero or the result is not finite.
+    #[must_use]
+    #[inline]
+    pub fn versor_inverse(self) -> Option<Self> {
+        let r = self.norm_squared().recip();
+        (r.is_finite() && r > T::ZERO).then(|| self.reverse() * r)
+    }
+
+    /// The scalar part, or an error naming the first non-zero blade of another grade.
+    ///
+    /// # Errors
+    ///
+    /// [`NarrowError`](crate::g3::NarrowError) when any non-scalar coefficient is non-zero.
+    pub fn try_scalar(self) -> Result<T, crate::g3::NarrowError> {
+        crate::g3::convert::check_zero(&self, "scalar", &[0])?;
+        Ok(self.s)
+    }
+}
