@@ -187,3 +187,101 @@ pub fn point_in_triangle<T: Scalar>(
     let inside = |start: Vector<T>, end: Vector<T>| (((end - start) ^ (p - start)) | n) <= T::ZERO;
     inside(a, b) && inside(b, c) && inside(c, a)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type V = Vector<f64>;
+
+    #[test]
+    fn plane_from_triangle_has_a_signed_offset() {
+        // Counter-clockwise seen from +z: normal +z; z = 3 is 3 along it.
+        let front = Plane::from_triangle(
+            V::new(0.0, 0.0, 3.0),
+            V::new(1.0, 0.0, 3.0),
+            V::new(0.0, 1.0, 3.0),
+        );
+        assert_eq!(front.bivector, Bivector::E12);
+        assert_eq!(front.normal(), V::E3);
+        assert_eq!(front.offset, 3.0);
+        // The same orientation behind the origin (z = -3): the offset is negative, where the
+        // report's |a⊥| would give +3 and put the plane in front.
+        let behind = Plane::from_triangle(
+            V::new(0.0, 0.0, -3.0),
+            V::new(1.0, 0.0, -3.0),
+            V::new(0.0, 1.0, -3.0),
+        );
+        assert_eq!(behind.offset, -3.0);
+        // Reversing the vertex order flips the bivector, the normal and the offset's sign.
+        let flipped = Plane::from_triangle(
+            V::new(0.0, 0.0, 3.0),
+            V::new(0.0, 1.0, 3.0),
+            V::new(1.0, 0.0, 3.0),
+        );
+        assert_eq!((flipped.bivector, flipped.offset), (-Bivector::E12, -3.0));
+        // A tilted plane: x + y + z = 1 through the three unit points.
+        let tilted = Plane::from_triangle(V::E1, V::E2, V::E3);
+        let s = 1.0 / 3.0_f64.sqrt();
+        assert!(tilted.normal().abs_diff_eq(V::new(s, s, s), 1e-15));
+        assert!((tilted.offset - s).abs() < 1e-15);
+        // The offset is the signed length of the rejection a⊥ = (a ∧ B) B⁻¹ along the normal.
+        let a = V::new(4.0, -1.0, 0.5);
+        let p = Plane::from_triangle(a, a + V::new(1.0, 2.0, 0.0), a + V::new(0.0, -1.0, 3.0));
+        assert!(((a.reject(p.bivector) | p.normal()) - p.offset).abs() < 1e-14);
+        assert!(Plane::try_from_triangle(V::E1, V::E1 * 2.0, V::E1 * 3.0).is_none());
+    }
+
+    #[test]
+    fn line_plane_intersection_by_hand() {
+        // Plane x + y + z = 1 (normal (1,1,1)/√3, offset 1/√3). Line (2, 0, 0) + t (-1, 1, 0)
+        // stays on x + y = 2, z = 0, so never meets it: parallel.
+        let plane = Plane::from_triangle(V::E1, V::E2, V::E3);
+        assert_eq!(
+            plane.intersect_line(&Line::new(V::new(2.0, 0.0, 0.0), V::new(-1.0, 1.0, 0.0))),
+            None
+        );
+        // Line (1, 1, 1) + t (1, 0, 0): 3 + t = 1 at t = -2, the point (-1, 1, 1).
+        let (t, p) = plane.intersect_line(&Line::new(V::new(1.0, 1.0, 1.0), V::E1)).unwrap();
+        assert!((t + 2.0).abs() < 1e-15);
+        assert!(p.abs_diff_eq(V::new(-1.0, 1.0, 1.0), 1e-15));
+        // A plane behind the origin (z = -2, normal +z), line from the origin toward -z:
+        // t = 2 with a unit direction, t = 1 with direction length 2.
+        let behind = Plane::from_point_normal(V::new(5.0, 5.0, -2.0), V::E3);
+        assert_eq!(behind.offset, -2.0);
+        let (t, p) = behind.intersect_line(&Line::new(V::ZERO, V::new(0.0, 0.0, -2.0))).unwrap();
+        assert_eq!((t, p), (1.0, V::new(0.0, 0.0, -2.0)));
+        assert_eq!(behind.signed_distance(V::ZERO), 2.0);
+        assert_eq!(behind.project_point(V::new(1.0, 2.0, 3.0)), V::new(1.0, 2.0, -2.0));
+        assert_eq!(behind.reflect_point(V::new(1.0, 2.0, 3.0)), V::new(1.0, 2.0, -7.0));
+        assert_eq!(behind.reflect_direction(V::new(1.0, 2.0, 3.0)), V::new(1.0, 2.0, -3.0));
+    }
+
+    #[test]
+    fn point_in_triangle_inside_outside_and_edges() {
+        let (a, b, c) = (V::new(0.0, 0.0, 1.0), V::new(2.0, 0.0, 1.0), V::new(0.0, 2.0, 1.0));
+        let p = |x, y| V::new(x, y, 1.0);
+        for (q, inside) in [
+            (p(0.5, 0.5), true),
+            (p(0.1, 1.8), true),
+            (p(1.5, 1.5), false),  // beyond the hypotenuse
+            (p(-0.1, 0.5), false), // beyond the edge ca
+            (p(0.5, -0.1), false), // beyond the edge ab
+            (p(1.0, 0.0), true),   // on an edge: the boundary is closed
+            (p(1.0, 1.0), true),   // on the hypotenuse
+            (p(0.0, 0.0), true),   // a vertex
+            (p(3.0, 0.0), false),  // on the line of an edge, outside the triangle
+        ] {
+            assert_eq!(point_in_triangle(q, a, b, c), inside, "{q}");
+            // The vertex order (orientation) does not matter.
+            assert_eq!(point_in_triangle(q, a, c, b), inside, "{q} reversed");
+            // The report's sign rule as written (s > 0 means inside) rejects interior points.
+            let n = (b - a) ^ (c - a);
+            let report_rule = (((b - a) ^ (q - a)) | n) > 0.0;
+            if inside && q == p(0.5, 0.5) {
+                assert!(!report_rule);
+            }
+        }
+        assert!(!point_in_triangle(p(0.0, 0.0), a, a, b));
+    }
+}

@@ -350,3 +350,118 @@ impl<T: Scalar> Multivector<T> {
         Ok(self.s)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::g3::NarrowError;
+
+    type M = Multivector<f64>;
+
+    #[test]
+    fn basis_products_follow_the_defining_rules() {
+        // e_i e_i = 1, e_i e_j = -e_j e_i, and the bivector names: e12 = e1 e2, e31 = e3 e1.
+        for e in [M::E1, M::E2, M::E3] {
+            assert_eq!(e * e, M::ONE);
+        }
+        assert_eq!(M::E1 * M::E2, M::E12);
+        assert_eq!(M::E2 * M::E1, -M::E12);
+        assert_eq!(M::E2 * M::E3, M::E23);
+        assert_eq!(M::E3 * M::E1, M::E31);
+        assert_eq!(M::E1 * M::E3, -M::E31);
+        assert_eq!(M::E1 * M::E2 * M::E3, M::E123);
+        // The report's worked example (section 2.2.2): (e1 ∧ e2)(e1 ∧ e2 ∧ e3) = -e3.
+        assert_eq!(M::E12 * M::E123, -M::E3);
+        for b in [M::E12, M::E23, M::E31, M::E123] {
+            assert_eq!(b * b, -M::ONE);
+        }
+    }
+
+    #[test]
+    fn array_order_is_the_reports() {
+        let a = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0];
+        let m = M::from_array(a);
+        assert_eq!(m.to_array(), a);
+        let got = [m.s(), m.e1(), m.e2(), m.e3(), m.e12(), m.e23(), m.e31(), m.e123()];
+        assert_eq!(got, a);
+        for (k, b) in
+            [M::ONE, M::E1, M::E2, M::E3, M::E12, M::E23, M::E31, M::E123].into_iter().enumerate()
+        {
+            assert_eq!(b, M::basis(k));
+            assert_eq!(b.to_string(), if k == 0 { "1" } else { &BASIS[k][..] }.replace('e', "1e"));
+        }
+    }
+
+    #[test]
+    fn display_matches_the_report_style() {
+        assert_eq!(
+            M::from_array([1.0, 2.0, 0.0, 0.0, 0.0, -0.5, 0.0, 0.0]).to_string(),
+            "1 + 2e1 - 0.5e23"
+        );
+        assert_eq!(M::ZERO.to_string(), "0");
+        assert_eq!((-M::E31).to_string(), "-1e31");
+        assert_eq!(format!("{:.2}", M::E1 * 0.125 - M::E123), "0.12e1 - 1.00e123");
+        assert_eq!(crate::g3::Rotor::new(0.5, 0.0, -0.5, 0.0).to_string(), "0.5 - 0.5e23");
+        assert_eq!(crate::g3::Vector::<f32>::ZERO.to_string(), "0");
+    }
+
+    #[test]
+    fn narrowing_refuses_to_drop_components() {
+        let v = crate::g3::Vector::new(1.0, 2.0, 3.0);
+        assert_eq!(crate::g3::Vector::try_from(M::from(v)), Ok(v));
+        let err = crate::g3::Vector::try_from(M::from(v) + M::E31 * 1e-300).unwrap_err();
+        assert_eq!(err, NarrowError { target: "Vector", blade: "e31" });
+        assert_eq!(
+            err.to_string(),
+            "cannot convert multivector to Vector: its e31 component is non-zero"
+        );
+        assert!(crate::g3::Bivector::try_from(M::E12 + M::ONE).is_err());
+        assert!(crate::g3::Trivector::try_from(M::E123 + M::E3).is_err());
+        assert!(crate::g3::Rotor::try_from(M::E12 + M::ONE).is_ok());
+        assert!(crate::g3::Rotor::try_from(M::E12 + M::E1 * f64::NAN).is_err());
+        assert_eq!((M::ONE * 2.0).try_scalar(), Ok(2.0));
+        assert!((M::ONE + M::E123).try_scalar().is_err());
+    }
+
+    #[test]
+    fn involutions_and_duals() {
+        let m = M::from_array([1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
+        assert_eq!(m.reverse().to_array(), [1.0, 2.0, 3.0, 4.0, -5.0, -6.0, -7.0, -8.0]);
+        assert_eq!(m.grade_involution().to_array(), [1.0, -2.0, -3.0, -4.0, 5.0, 6.0, 7.0, -8.0]);
+        assert_eq!(m.conjugate(), m.grade_involution().reverse());
+        // A* = A I⁻¹ with I⁻¹ = -I, checked against the geometric product.
+        assert_eq!(m.dual(), m * -M::E123);
+        assert_eq!(m.undual(), m * M::E123);
+        assert_eq!(m.dual().undual(), m);
+        assert_eq!(M::E12.dual(), M::E3);
+        assert_eq!(m.grade(2).to_array(), [0.0, 0.0, 0.0, 0.0, 5.0, 6.0, 7.0, 0.0]);
+        assert_eq!(m.grade(4), M::ZERO);
+        assert_eq!(m.norm_squared(), (m * m.reverse()).s());
+    }
+
+    #[test]
+    fn closed_form_inverse() {
+        let cases = [
+            [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0],
+            [0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0],
+            [0.3, -0.2, 0.0, 0.9, 0.0, 0.1, -4.0, 0.0],
+        ];
+        for a in cases {
+            let m = M::from_array(a);
+            let inv = m.inverse().unwrap();
+            assert!((m * inv).abs_diff_eq(M::ONE, 1e-14), "{m}: {}", m * inv);
+            assert!((inv * m).abs_diff_eq(M::ONE, 1e-14), "{m}: {}", inv * m);
+        }
+        // 1 + e1 is a zero divisor: (1 + e1)(1 - e1) = 0.
+        assert_eq!((M::ONE + M::E1).inverse(), None);
+        assert_eq!(M::ZERO.inverse(), None);
+        assert_eq!((M::ONE * f64::NAN).inverse(), None);
+        // The versor inverse agrees on a versor (a product of vectors) ...
+        let v = (M::E1 + M::E2 * 2.0) * (M::E3 - M::E1 * 0.5) * (M::E2 + M::E3);
+        assert!(v.versor_inverse().unwrap().abs_diff_eq(v.inverse().unwrap(), 1e-14));
+        // ... and is wrong on a non-versor, as documented.
+        let n = M::ONE + M::E123 * 2.0 + M::E1;
+        assert!(!(n * n.versor_inverse().unwrap()).abs_diff_eq(M::ONE, 1e-3));
+    }
+}

@@ -247,3 +247,125 @@ impl<T: Scalar> Rotor<T> {
         (r.is_finite() && r > T::ZERO).then(|| self.reverse() * r)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::g3::Multivector;
+    use core::f64::consts::{FRAC_PI_2, PI};
+
+    type V = Vector<f64>;
+
+    /// The general sandwich `R v R̃` with two geometric products, as an independent check.
+    fn sandwich(r: Rotor<f64>, v: V) -> V {
+        let m = Multivector::from(r) * Multivector::from(v) * Multivector::from(r.reverse());
+        // Only rounding may leave a trivector part.
+        assert!(m.e123().abs() < 1e-14, "{m}");
+        m.vector_part()
+    }
+
+    #[test]
+    fn quarter_turns_follow_the_convention() {
+        let tol = 1e-15;
+        let r = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E12);
+        assert!(r.rotate(V::E1).abs_diff_eq(V::E2, tol));
+        assert!(r.rotate(V::E2).abs_diff_eq(-V::E1, tol));
+        assert!(r.rotate(V::E3).abs_diff_eq(V::E3, tol));
+        let r = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E23);
+        assert!(r.rotate(V::E2).abs_diff_eq(V::E3, tol));
+        let r = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E31 * 5.0);
+        assert!(r.rotate(V::E3).abs_diff_eq(V::E1, tol));
+        // R = exp(-B θ/2).
+        let b = Bivector::new(0.2, -0.3, 0.9).normalize();
+        assert!(Rotor::from_angle_plane(0.8, b).abs_diff_eq((b * -0.4).exp(), tol));
+    }
+
+    #[test]
+    fn rotate_is_the_sandwich() {
+        let r = Rotor::new(0.3, -0.5, 0.2, 0.7).normalize();
+        for v in [V::E1, V::E2, V::E3, V::new(1.5, -2.0, 0.25)] {
+            assert!(r.rotate(v).abs_diff_eq(sandwich(r, v), 1e-14));
+        }
+        let b = Bivector::new(1.0, 2.0, -3.0);
+        let m = Multivector::from(r) * Multivector::from(b) * Multivector::from(r.reverse());
+        assert!(Multivector::from(r.rotate_bivector(b)).abs_diff_eq(m, 1e-14));
+        // Rotation about a point fixes that point.
+        let c = V::new(1.0, 1.0, 0.0);
+        assert!(r.rotate_about(c, c).abs_diff_eq(c, 1e-15));
+        let quarter = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E12);
+        assert!(
+            quarter
+                .rotate_about(V::new(2.0, 1.0, 0.0), c)
+                .abs_diff_eq(V::new(1.0, 2.0, 0.0), 1e-15)
+        );
+    }
+
+    #[test]
+    fn composition_applies_the_right_factor_first() {
+        let r1 = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E12); // e1 -> e2
+        let r2 = Rotor::from_angle_plane(FRAC_PI_2, Bivector::E23); // e2 -> e3
+        assert!((r2 * r1).rotate(V::E1).abs_diff_eq(V::E3, 1e-15));
+        let mut r = r2;
+        r *= r1;
+        assert_eq!(r, r2 * r1);
+        assert!((r * r.inverse().unwrap()).abs_diff_eq(Rotor::IDENTITY, 1e-15));
+    }
+
+    #[test]
+    fn from_vectors_handles_zero_and_straight_angles() {
+        let tol = 1e-14;
+        let pairs = [
+            (V::new(1.0, 2.0, 3.0), V::new(-2.0, 0.5, 1.0)),
+            (V::new(1.0, 2.0, 3.0), V::new(2.0, 4.0, 6.0)), // 0°
+            (V::new(1.0, 2.0, 3.0), V::new(-1.0, -2.0, -3.0)), // 180°
+            (V::E1, -V::E1 * 3.0),                          // 180° along an axis
+            (V::new(0.0, 0.0, 2.0), V::new(0.0, 0.0, -1.0)),
+            (V::E1, V::new(-1.0, 1e-9, 0.0)), // nearly opposite
+        ];
+        for (a, b) in pairs {
+            let r = Rotor::from_vectors(a, b);
+            assert!((r.norm() - 1.0).abs() < tol, "{a} -> {b}: |R| = {}", r.norm());
+            let got = r.rotate(a.normalize());
+            assert!(got.abs_diff_eq(b.normalize(), tol), "{a} -> {b}: got {got}");
+        }
+        assert_eq!(Rotor::from_vectors(V::E1, V::E1 * 2.0), Rotor::IDENTITY);
+        // The smallest rotation: e1 -> e2 is the quarter turn in e12, nothing else.
+        let r = Rotor::from_vectors(V::E1, V::E2);
+        assert!(r.abs_diff_eq(Rotor::from_angle_plane(FRAC_PI_2, Bivector::E12), tol));
+    }
+
+    #[test]
+    fn exp_and_log_are_inverse() {
+        for b in [
+            Bivector::new(0.1, 0.2, -0.3),
+            Bivector::new(1.0, 0.0, 0.0),
+            Bivector::new(0.0, -1.5, 1.0),
+            Bivector::new(1e-12, 0.0, 0.0),
+            Bivector::ZERO,
+        ] {
+            let r = b.exp();
+            assert!((r.norm() - 1.0).abs() < 1e-15);
+            assert!(r.log().abs_diff_eq(b, 1e-15), "{b}: {}", r.log());
+        }
+        // The half angle of a rotation by θ is the norm of its log.
+        let r = Rotor::from_angle_plane(2.5, Bivector::new(1.0, 1.0, 0.0));
+        assert!((r.log().norm() - 1.25).abs() < 1e-15);
+        // A full turn: -1.
+        assert!((-Rotor::<f64>::IDENTITY).log().exp().abs_diff_eq(-Rotor::IDENTITY, 1e-15));
+        assert_eq!(Rotor::<f64>::IDENTITY.log(), Bivector::ZERO);
+        assert!((Bivector::E12 * PI).exp().abs_diff_eq(-Rotor::IDENTITY, 1e-15));
+    }
+
+    #[test]
+    fn slerp_moves_at_constant_angle_on_the_short_arc() {
+        let p = Bivector::new(0.3, 0.4, -0.2).normalize();
+        let r0 = Rotor::from_angle_plane(0.2, p);
+        let r1 = Rotor::from_angle_plane(1.4, p);
+        for (t, angle) in [(0.0, 0.2), (0.25, 0.5), (0.5, 0.8), (1.0, 1.4)] {
+            let want = Rotor::from_angle_plane(angle, p);
+            assert!(r0.slerp(r1, t).abs_diff_eq(want, 1e-14), "t = {t}");
+        }
+        // -r1 is the same rotation: the path is the same.
+        assert!(r0.slerp(-r1, 0.5).abs_diff_eq(Rotor::from_angle_plane(0.8, p), 1e-14));
+    }
+}
