@@ -1,0 +1,383 @@
+//! A pinhole camera and the exact mapping from pixels to rays.
+//!
+//! # The contract
+//!
+//! Given an eye, a point to look at, an up hint and a vertical field of view `fov` (degrees):
+//!
+//! ```text
+//! fwd   = normalize(look_at - eye)
+//! right = normalize(cross(up, fwd))
+//! up'   = cross(fwd, right)
+//! ```
+//!
+//! Pixel `(i, j)` of a `W x H` image, `i` counted from the left and `j` from the top, is traced
+//! through its centre:
+//!
+//! ```text
+//! x   = (2 (i + 0.5) / W - 1) tan(fov / 2) W / H
+//! y   = (1 - 2 (j + 0.5) / H) tan(fov / 2)
+//! dir = normalize(fwd + x right + y up')
+//! ```
+//!
+//! from origin `eye`. Everything is computed in `f64`; [`Camera::ray`] rounds the result to the
+//! tracer's precision at the very end, so an `f32` and an `f64` render shoot the same rays up
+//! to one rounding.
+//!
+//! # Handedness
+//!
+//! `right x up' = fwd`: the camera's axes (right, up', forward) are ordered like the world's
+//! (x, y, z). The [origin camera](Camera::origin) looks along +z with +y up, so +x is on the
+//! **right** of the image and +y at the top; the same convention as the report's renderer,
+//! POV-Ray and Direct3D (a "left-handed" view). A right-handed OpenGL-style viewer standing at
+//! the same place and looking the same way would see +x on the left, that is, this image
+//! flipped left to right. Concretely: a mesh vertex at `(1, 0, 5)` appears right of the centre
+//! of the origin camera's image, and one at `(0, 1, 5)` above it.
+
+use intersect::{Ray, Real};
+
+/// The default vertical field of view, in degrees.
+pub const DEFAULT_FOV_DEG: f64 = 45.0;
+
+/// How far outside the tightest distance [`Camera::auto`] puts the eye (5 % margin).
+pub const AUTO_MARGIN: f64 = 1.05;
+
+/// Why a camera could not be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CameraError {
+    /// A coordinate, the field of view, the radius or the aspect ratio is NaN or infinite.
+    #[error("camera parameters must be finite numbers")]
+    NotFinite,
+    /// The eye and the point looked at coincide, so there is no viewing direction.
+    #[error("the camera's eye and look-at point coincide")]
+    EyeAtLookAt,
+    /// The up vector is zero or parallel to the viewing direction.
+    #[error("the camera's up vector is zero or parallel to the viewing direction")]
+    UpAlongView,
+    /// The field of view is not strictly between 0 and 180 degrees.
+    #[error("field of view {0} degrees is not strictly between 0 and 180")]
+    BadFov(f64),
+    /// The aspect ratio (width / height) is not positive.
+    #[error("aspect ratio {0} is not positive")]
+    BadAspect(f64),
+}
+
+/// A pinhole camera: an eye, an orthonormal frame and a vertical field of view.
+///
+/// ```
+/// use render::camera::Camera;
+///
+/// let cam = Camera::origin();
+/// // The centre of an odd-sized image looks straight ahead, along +z.
+/// let d = cam.direction(50, 50, 101, 101);
+/// assert!((d[2] - 1.0).abs() < 1e-15 && d[0].abs() < 1e-15 && d[1].abs() < 1e-15);
+/// // A pixel right of the centre looks towards +x.
+/// assert!(cam.direction(90, 50, 101, 101)[0] > 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    eye: [f64; 3],
+    fwd: [f64; 3],
+    right: [f64; 3],
+    up: [f64; 3],
+    fov_deg: f64,
+    tan_half: f64,
+}
+
+impl Camera {
+    /// A camera at `eye` looking at `look_at`, with `up` as the up hint (it need not be
+    /// perpendicular to the view, nor unit length) and vertical field of view `fov_deg` degrees.
+    ///
+    /// # Errors
+    ///
+    /// [`CameraError`] if a value is not finite, the eye is the look-at point, `up` is zero or
+    /// parallel to the view, or the field of view is not strictly between 0 and 180 degrees.
+    pub fn look_at(
+        eye: [f64; 3],
+        look_at: [f64; 3],
+        up: [f64; 3],
+        fov_deg: f64,
+    ) -> Result<Self, CameraError> {
+        let all = eye.iter().chain(&look_at).chain(&up).chain(core::iter::once(&fov_deg));
+        if !all.copied().all(f64::is_finite) {
+            return Err(CameraError::NotFinite);
+        }
+        if !(fov_deg > 0.0 && fov_deg < 180.0) {
+            return Err(CameraError::BadFov(fov_deg));
+        }
+        let fwd = normalize(sub(look_at, eye)).ok_or(CameraError::EyeAtLookAt)?;
+        let right = normalize(cross(up, fwd)).ok_or(CameraError::UpAlongView)?;
+        // fwd and right are orthonormal, so their cross product is already unit length.
+        let up = cross(fwd, right);
+        let tan_half = (fov_deg.to_radians() / 2.0).tan();
+        Ok(Self { eye, fwd, right, up, fov_deg, tan_half })
+    }
+
+    /// The report's camera: eye at the origin, looking along +z, +y up, 45 degree vertical field
+    /// of view.
+    #[must_use]
+    pub fn origin() -> Self {
+        Self::look_at([0.0; 3], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0], DEFAULT_FOV_DEG)
+            .expect("the origin camera's parameters are valid")
+    }
+
+    /// A camera that frames a bounding sphere (`center`, `radius`) from its -z side, for an
+    /// image of the given `aspect` ratio (width / height).
+    ///
+    /// Placement, exactly: with half-angle `a = min(vfov, hfov) / 2`, where
+    /// `tan(hfov / 2) = tan(vfov / 2) * aspect`, the eye is at
+    /// `center - (0, 0, dist)` with `dist = AUTO_MARGIN * radius / sin(a)`, looking at
+    /// `center` with +y up. At that distance the sphere's silhouette cone has half-angle
+    /// `asin(1 / AUTO_MARGIN)` of `a`, so the whole sphere fits the narrower side of the
+    /// image with a margin, and the eye is outside the sphere, so every point of the mesh is
+    /// in front of it. A radius that is not positive (a mesh collapsed to a point) counts as 1.
+    ///
+    /// # Errors
+    ///
+    /// [`CameraError`] if a value is not finite, the field of view is not strictly between 0
+    /// and 180 degrees, or the aspect ratio is not positive.
+    pub fn auto(
+        center: [f64; 3],
+        radius: f64,
+        fov_deg: f64,
+        aspect: f64,
+    ) -> Result<Self, CameraError> {
+        if !(radius.is_finite() && aspect.is_finite() && fov_deg.is_finite()) {
+            return Err(CameraError::NotFinite);
+        }
+        if !(fov_deg > 0.0 && fov_deg < 180.0) {
+            return Err(CameraError::BadFov(fov_deg));
+        }
+        if aspect <= 0.0 {
+            return Err(CameraError::BadAspect(aspect));
+        }
+        let radius = if radius > 0.0 { radius } else { 1.0 };
+        let tan_v = (fov_deg.to_radians() / 2.0).tan();
+        let half = tan_v.min(tan_v * aspect).atan();
+        let dist = AUTO_MARGIN * radius / half.sin();
+        let eye = [center[0], center[1], center[2] - dist];
+        Self::look_at(eye, center, [0.0, 1.0, 0.0], fov_deg)
+    }
+
+    /// The eye (every ray's origin).
+    #[must_use]
+    pub const fn eye(&self) -> [f64; 3] {
+        self.eye
+    }
+
+    /// The unit viewing direction `fwd`.
+    #[must_use]
+    pub const fn forward(&self) -> [f64; 3] {
+        self.fwd
+    }
+
+    /// The unit vector pointing to the right of the image.
+    #[must_use]
+    pub const fn right(&self) -> [f64; 3] {
+        self.right
+    }
+
+    /// The unit vector pointing to the top of the image (`up'`, perpendicular to `fwd`).
+    #[must_use]
+    pub const fn up(&self) -> [f64; 3] {
+        self.up
+    }
+
+    /// The vertical field of view in degrees.
+    #[must_use]
+    pub const fn fov_deg(&self) -> f64 {
+        self.fov_deg
+    }
+
+    /// The unit direction of the ray through the centre of pixel `(i, j)` of a
+    /// `width x height` image (`i` from the left, `j` from the top), in `f64`.
+    ///
+    /// Pixels outside the image are allowed: the formula simply extends past the edges.
+    ///
+    /// # Panics
+    ///
+    /// Does not panic; a zero `width` or `height` gives NaN components.
+    #[must_use]
+    pub fn direction(&self, i: u32, j: u32, width: u32, height: u32) -> [f64; 3] {
+        let (w, h) = (f64::from(width), f64::from(height));
+        let x = (2.0 * (f64::from(i) + 0.5) / w - 1.0) * self.tan_half * w / h;
+        let y = (1.0 - 2.0 * (f64::from(j) + 0.5) / h) * self.tan_half;
+        let d = core::array::from_fn(|k| self.fwd[k] + x * self.right[k] + y * self.up[k]);
+        // |d| >= 1 because fwd is a unit vector perpendicular to right and up'.
+        normalize(d).expect("a pixel direction has length at least 1")
+    }
+
+    /// The ray through the centre of pixel `(i, j)`, rounded to precision `T` (see
+    /// [`Camera::direction`]).
+    #[must_use]
+    pub fn ray<T: Real>(&self, i: u32, j: u32, width: u32, height: u32) -> Ray<T> {
+        Ray::new(self.eye, self.direction(i, j, width, height)).cast()
+    }
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// `v / |v|`, or `None` when `v` is too short to have a direction.
+fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
+    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    // Relative to the largest component: a tiny but well-formed vector still normalises.
+    let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    (len > 0.0 && len.is_finite() && len > scale * 1e-12).then(|| v.map(|x| x / len))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+
+    fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
+        (0..3).all(|k| (a[k] - b[k]).abs() <= tol)
+    }
+
+    #[test]
+    fn origin_camera_axes_are_the_world_axes() {
+        let c = Camera::origin();
+        assert_eq!(c.eye(), [0.0; 3]);
+        assert_eq!(c.forward(), [0.0, 0.0, 1.0]);
+        assert_eq!(c.right(), [1.0, 0.0, 0.0]);
+        assert_eq!(c.up(), [0.0, 1.0, 0.0]);
+        assert_eq!(c.fov_deg(), 45.0);
+    }
+
+    #[test]
+    fn centre_pixel_looks_forward() {
+        let c = Camera::look_at([1.0, 2.0, 3.0], [4.0, -2.0, 3.0], [0.0, 0.0, 1.0], 60.0).unwrap();
+        let d = c.direction(100, 40, 201, 81);
+        assert!(close(d, [0.6, -0.8, 0.0], 1e-15), "{d:?}");
+    }
+
+    #[test]
+    fn corner_pixels_follow_the_formula() {
+        // Independent reference: the angle from the axis of the ray through the image corner
+        // (pixel edge, not centre) is given by tan = tan(fov/2) * sqrt(aspect^2 + 1).
+        let (w, h) = (400u32, 200u32);
+        let c = Camera::origin();
+        let t = (22.5f64).to_radians().tan();
+        for (i, j, sx, sy) in [(0, 0, -1.0, 1.0), (w - 1, 0, 1.0, 1.0), (0, h - 1, -1.0, -1.0)] {
+            let d = c.direction(i, j, w, h);
+            // Pixel centre offsets, written out by hand for this size.
+            let x = sx * (1.0 - 1.0 / f64::from(w)) * t * 2.0;
+            let y = sy * (1.0 - 1.0 / f64::from(h)) * t;
+            let n = (1.0 + x * x + y * y).sqrt();
+            assert!(close(d, [x / n, y / n, 1.0 / n], 1e-15), "{i},{j}: {d:?}");
+        }
+    }
+
+    #[test]
+    fn fov_spans_the_image_height_and_aspect_the_width() {
+        // Pixel edges: a 2-pixel-high image's rows straddle the centre; extrapolating the
+        // centre formula to i = -0.5 is the image edge. Check with a 1-pixel-wide column of
+        // very many rows: the first row's angle tends to fov/2.
+        let c = Camera::look_at([0.0; 3], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0], 90.0).unwrap();
+        let h = 1_000_000;
+        let top = c.direction(0, 0, 1, h);
+        let angle = top[1].atan2(top[2]).to_degrees();
+        assert!((angle - 45.0).abs() < 1e-3, "{angle}");
+        // Width 3x height: the horizontal half-angle has tangent 3 * tan(45) = 3.
+        let h = 1_000_001;
+        let left = c.direction(0, h / 2, 3 * h, h);
+        assert!((-left[0] / left[2] - 3.0).abs() < 1e-5, "{left:?}");
+        assert!(left[1].abs() < 1e-15);
+    }
+
+    #[test]
+    fn every_direction_is_unit_and_frame_is_orthonormal() {
+        let c = Camera::look_at([0.3, -1.0, 2.0], [1.0, 1.0, 1.0], [0.2, 0.9, 0.1], 33.0).unwrap();
+        let (f, r, u) = (c.forward(), c.right(), c.up());
+        for (a, b) in [(f, r), (f, u), (r, u)] {
+            assert!(dot(a, b).abs() < 1e-15);
+        }
+        for v in [f, r, u] {
+            assert!((dot(v, v) - 1.0).abs() < 1e-15);
+        }
+        // right x up' = fwd: the documented handedness.
+        assert!(close(cross(r, u), f, 1e-15));
+        for (i, j) in [(0, 0), (7, 3), (63, 47)] {
+            let d = c.direction(i, j, 64, 48);
+            assert!((dot(d, d) - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn world_x_is_image_right_and_world_y_is_image_top() {
+        let c = Camera::origin();
+        let (w, h) = (64, 64);
+        // Project a point to the pixel whose ray passes nearest to it: search all pixels.
+        let nearest = |p: [f64; 3]| {
+            let n = normalize(p).unwrap();
+            let mut best = (0, 0, -2.0);
+            for j in 0..h {
+                for i in 0..w {
+                    let d = dot(c.direction(i, j, w, h), n);
+                    if d > best.2 {
+                        best = (i, j, d);
+                    }
+                }
+            }
+            (best.0, best.1)
+        };
+        let (i, j) = nearest([1.0, 0.0, 5.0]);
+        assert!(i > w / 2 && (j == h / 2 || j == h / 2 - 1), "{i},{j}");
+        let (i, j) = nearest([0.0, 1.0, 5.0]);
+        assert!(j < h / 2 && (i == w / 2 || i == w / 2 - 1), "{i},{j}");
+    }
+
+    #[test]
+    fn auto_frames_the_sphere_with_a_margin() {
+        for (aspect, fov) in [(1.0, 45.0), (2.0, 30.0), (0.5, 60.0)] {
+            let (center, r) = ([1.0, -2.0, 3.0], 2.5);
+            let c = Camera::auto(center, r, fov, aspect).unwrap();
+            assert_eq!(c.forward(), [0.0, 0.0, 1.0]);
+            let dist = center[2] - c.eye()[2];
+            assert_eq!(c.eye()[0], center[0]);
+            assert_eq!(c.eye()[1], center[1]);
+            // The silhouette's half-angle is asin(r / dist); it must be within the narrower
+            // half field of view, and the margin means strictly within.
+            let sil = (r / dist).asin().to_degrees();
+            let vhalf = fov / 2.0;
+            let hhalf = (vhalf.to_radians().tan() * aspect).atan().to_degrees();
+            let narrow = vhalf.min(hhalf);
+            assert!(sil < narrow && sil > narrow * 0.9, "{sil} vs {narrow}");
+            assert!(dist > r);
+        }
+        let c = Camera::auto([0.0; 3], 0.0, 45.0, 1.0).unwrap();
+        assert!(c.eye()[2] < -1.0);
+    }
+
+    #[test]
+    fn bad_cameras_are_errors() {
+        let z = [0.0; 3];
+        let (fwd, up) = ([0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
+        assert_eq!(Camera::look_at(z, z, up, 45.0), Err(CameraError::EyeAtLookAt));
+        assert_eq!(Camera::look_at(z, fwd, fwd, 45.0), Err(CameraError::UpAlongView));
+        assert_eq!(Camera::look_at(z, fwd, z, 45.0), Err(CameraError::UpAlongView));
+        assert_eq!(Camera::look_at(z, fwd, up, 180.0), Err(CameraError::BadFov(180.0)));
+        assert_eq!(Camera::look_at(z, fwd, up, 0.0), Err(CameraError::BadFov(0.0)));
+        assert_eq!(Camera::look_at([f64::NAN; 3], fwd, up, 45.0), Err(CameraError::NotFinite));
+        assert_eq!(Camera::auto(z, f64::INFINITY, 45.0, 1.0), Err(CameraError::NotFinite));
+        assert_eq!(Camera::auto(z, 1.0, 45.0, 0.0), Err(CameraError::BadAspect(0.0)));
+    }
+
+    #[test]
+    fn f32_rays_round_the_f64_ray() {
+        let c = Camera::origin();
+        let r64: Ray<f64> = c.ray(3, 4, 10, 10);
+        let r32: Ray<f32> = c.ray(3, 4, 10, 10);
+        for k in 0..3 {
+            assert_eq!(r32.dir[k], r64.dir[k] as f32);
+        }
+    }
+}

@@ -1,0 +1,387 @@
+//! Writing results to files: formats chosen by extension, and files that appear whole or not
+//! at all.
+//!
+//! | extension | format | what is written |
+//! |---|---|---|
+//! | `.png` | PNG, 8-bit | [`Frame::to_display`]: grey for `alpha` and `depth`, RGB otherwise |
+//! | `.jpg`, `.jpeg` | JPEG, quality 95 | the same 8-bit image |
+//! | `.exr` | OpenEXR, 32-bit float RGBA | [`Frame::to_float`]: raw values, A = hit |
+//! | `.npy` | NumPy array | the raw values ([`crate::frame`]): `alpha` `|u1` `(H, W)`, `depth` `<f4` `(H, W)`, `normal` and `shade` `<f4` `(H, W, 3)`, `prim` `<u4` `(H, W)` |
+//!
+//! Extensions are matched without regard to case.
+//!
+//! # Atomic writes
+//!
+//! [`AtomicFile`] writes into a temporary file (`.NAME.XXXXXX.tmp`) in the destination's own
+//! directory and renames it over the destination only when everything has been written, so
+//! a reader never sees half a file and a failed run leaves nothing behind (the temporary
+//! file is removed when the [`AtomicFile`] is dropped). Creating it first also proves the
+//! directory is writable: a program should create its outputs before doing the work.
+//!
+//! ```
+//! use render::frame::{Frame, Mode};
+//! use render::output::ImageOutput;
+//!
+//! let dir = tempfile::tempdir()?;
+//! let path = dir.path().join("mask.png");
+//! let out = ImageOutput::create(&path)?; // checks the extension and the directory now
+//! let frame = Frame::new(Mode::Alpha, 4, 3)?; // ... render into it ...
+//! out.write(&frame)?;
+//! assert_eq!(image::open(&path)?.width(), 4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+pub mod npy;
+
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use image::ImageFormat;
+use image::codecs::jpeg::JpegEncoder;
+use tempfile::NamedTempFile;
+
+use crate::frame::{Frame, FrameData, FrameError};
+
+/// JPEG quality (1 to 100): high, since the images are for inspection.
+const JPEG_QUALITY: u8 = 95;
+
+/// An output file format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Format {
+    /// PNG, 8 bits per channel.
+    Png,
+    /// JPEG, 8 bits per channel.
+    Jpeg,
+    /// OpenEXR, 32-bit float RGBA.
+    Exr,
+    /// NumPy `.npy`, the raw values.
+    Npy,
+}
+
+impl Format {
+    /// The format for a path's extension (`.png`, `.jpg`, `.jpeg`, `.exr`, `.npy`, any case).
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::UnknownExtension`] for anything else, no extension included.
+    pub fn from_path(path: &Path) -> Result<Self, OutputError> {
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("png") => Ok(Self::Png),
+            Some("jpg" | "jpeg") => Ok(Self::Jpeg),
+            Some("exr") => Ok(Self::Exr),
+            Some("npy") => Ok(Self::Npy),
+            _ => Err(OutputError::UnknownExtension { path: path.to_path_buf() }),
+        }
+    }
+}
+
+/// Why an output could not be written. Each message is one line naming the file.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// The extension names no supported format.
+    #[error(
+        "{}: unknown output format (use a .png, .jpg, .jpeg, .exr or .npy extension)",
+        path.display()
+    )]
+    UnknownExtension {
+        /// The path as given.
+        path: PathBuf,
+    },
+    /// The temporary file could not be created: the directory is missing or not writable.
+    #[error("{}: cannot write to this location: {source}", path.display())]
+    Create {
+        /// The destination path.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// Writing or renaming failed.
+    #[error("{}: write failed: {source}", path.display())]
+    Write {
+        /// The destination path.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// The image encoder failed.
+    #[error("{}: cannot encode the image: {source}", path.display())]
+    Encode {
+        /// The destination path.
+        path: PathBuf,
+        /// The encoder's reason.
+        source: image::ImageError,
+    },
+    /// The image to encode could not be made.
+    #[error("{}: {source}", path.display())]
+    Frame {
+        /// The destination path.
+        path: PathBuf,
+        /// Why.
+        source: FrameError,
+    },
+}
+
+/// A file that appears at its path only when [`AtomicFile::commit`] succeeds (see the
+/// [module documentation](self)).
+#[derive(Debug)]
+pub struct AtomicFile {
+    path: PathBuf,
+    temp: NamedTempFile,
+}
+
+impl AtomicFile {
+    /// Creates the temporary file next to `path`.
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::Create`] if the directory does not exist or is not writable.
+    pub fn create(path: &Path) -> Result<Self, OutputError> {
+        let dir = match path.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let prefix = format!(".{name}.");
+        let mut builder = tempfile::Builder::new();
+        builder.prefix(&prefix).suffix(".tmp");
+        // Temporary files are private (0600) by default; the result should get the usual
+        // permissions of a new file (0666 less the umask).
+        #[cfg(unix)]
+        builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+        let temp = builder
+            .tempfile_in(dir)
+            .map_err(|source| OutputError::Create { path: path.to_path_buf(), source })?;
+        Ok(Self { path: path.to_path_buf(), temp })
+    }
+
+    /// The destination path.
+    #[must_use]
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Writes the contents with `write`, flushes them and renames the file into place,
+    /// replacing any file already there.
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::Write`] if writing, flushing or renaming fails; the temporary file is
+    /// removed and the destination is left as it was.
+    pub fn commit(
+        self,
+        write: impl FnOnce(&mut BufWriter<&File>) -> io::Result<()>,
+    ) -> Result<(), OutputError> {
+        let path = self.path;
+        let fail = |source| OutputError::Write { path: path.clone(), source };
+        let mut w = BufWriter::new(self.temp.as_file());
+        write(&mut w).map_err(fail)?;
+        w.flush().map_err(fail)?;
+        drop(w);
+        self.temp.persist(&path).map_err(|e| fail(e.error))?;
+        Ok(())
+    }
+
+    /// Like [`AtomicFile::commit`] for writers whose error is not an [`io::Error`].
+    fn commit_with<E>(
+        self,
+        write: impl FnOnce(&mut BufWriter<&File>) -> Result<(), E>,
+        wrap: impl FnOnce(PathBuf, E) -> OutputError,
+    ) -> Result<(), OutputError> {
+        let path = self.path.clone();
+        let mut failure = None;
+        let result = self.commit(|w| {
+            write(w).map_err(|e| {
+                failure = Some(e);
+                io::Error::other("encoding failed")
+            })
+        });
+        match failure {
+            Some(e) => Err(wrap(path, e)),
+            None => result,
+        }
+    }
+}
+
+/// An image file about to be written: its format is known and its directory writable.
+#[derive(Debug)]
+pub struct ImageOutput {
+    file: AtomicFile,
+    format: Format,
+}
+
+impl ImageOutput {
+    /// Checks the extension, then creates the temporary file (see [`AtomicFile::create`]).
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::UnknownExtension`] or [`OutputError::Create`].
+    pub fn create(path: &Path) -> Result<Self, OutputError> {
+        let format = Format::from_path(path)?;
+        Ok(Self { file: AtomicFile::create(path)?, format })
+    }
+
+    /// The format chosen by the extension.
+    #[must_use]
+    pub const fn format(&self) -> Format {
+        self.format
+    }
+
+    /// The destination path.
+    #[must_use]
+    pub fn path(&self) -> &Path {
+        self.file.path()
+    }
+
+    /// Encodes `frame` in the file's format and puts the file in place.
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError`]: the image cannot be allocated, encoded or written.
+    pub fn write(self, frame: &Frame) -> Result<(), OutputError> {
+        let path = self.file.path().to_path_buf();
+        let frame_error = |source| OutputError::Frame { path: path.clone(), source };
+        let encode = |path, source| OutputError::Encode { path, source };
+        match self.format {
+            Format::Png => {
+                let img = frame.to_display().map_err(frame_error)?;
+                self.file.commit_with(|w| img.write_to(w, ImageFormat::Png), encode)
+            }
+            Format::Jpeg => {
+                let img = frame.to_display().map_err(frame_error)?;
+                self.file.commit_with(
+                    |w| img.write_with_encoder(JpegEncoder::new_with_quality(w, JPEG_QUALITY)),
+                    encode,
+                )
+            }
+            Format::Exr => {
+                let img = image::DynamicImage::from(frame.to_float().map_err(frame_error)?);
+                self.file.commit_with(|w| img.write_to(w, ImageFormat::OpenExr), encode)
+            }
+            Format::Npy => self.file.commit(|w| write_npy(frame, w)),
+        }
+    }
+}
+
+/// Writes a frame's raw values as `.npy` (shapes in the [module documentation](self)).
+///
+/// # Errors
+///
+/// The writer's I/O errors.
+pub fn write_npy(frame: &Frame, w: &mut impl Write) -> io::Result<()> {
+    let (h, wd) = (frame.height() as usize, frame.width() as usize);
+    match frame.data() {
+        FrameData::Alpha(v) => npy::write(w, &[h, wd], v.iter().copied()),
+        FrameData::Depth(v) => npy::write(w, &[h, wd], v.iter().copied()),
+        FrameData::Normal(v) | FrameData::Shade(v) => {
+            npy::write(w, &[h, wd, 3], v.iter().flatten().copied())
+        }
+        FrameData::Prim(v) => npy::write(w, &[h, wd], v.iter().copied()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn files_in(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn formats_by_extension() {
+        for (name, f) in [
+            ("a.png", Format::Png),
+            ("a.PNG", Format::Png),
+            ("a.jpg", Format::Jpeg),
+            ("dir/a.jpeg", Format::Jpeg),
+            ("a.exr", Format::Exr),
+            ("a.npy", Format::Npy),
+        ] {
+            assert_eq!(Format::from_path(Path::new(name)).unwrap(), f, "{name}");
+        }
+        for name in ["a.gif", "a", "a.png.bak"] {
+            let e = Format::from_path(Path::new(name)).unwrap_err();
+            assert!(e.to_string().starts_with(&format!("{name}: unknown output format")));
+        }
+    }
+
+    #[test]
+    fn nothing_is_left_behind_without_commit() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.png");
+        let out = ImageOutput::create(&path).unwrap();
+        assert_eq!(files_in(dir.path()).len(), 1, "the temporary file exists meanwhile");
+        drop(out);
+        assert!(files_in(dir.path()).is_empty());
+    }
+
+    #[test]
+    fn missing_directory_fails_at_create() {
+        let e = ImageOutput::create(Path::new("/nonexistent/dir/x.png")).unwrap_err();
+        assert!(matches!(e, OutputError::Create { .. }));
+        assert!(e.to_string().starts_with("/nonexistent/dir/x.png: cannot write"), "{e}");
+    }
+
+    #[test]
+    fn every_format_round_trips_its_pixels() {
+        let dir = tempfile::tempdir().unwrap();
+        let frame = Frame::from_data(3, 2, FrameData::Alpha(vec![1, 0, 1, 0, 0, 1])).unwrap();
+        for ext in ["png", "jpg", "exr"] {
+            let path = dir.path().join(format!("a.{ext}"));
+            ImageOutput::create(&path).unwrap().write(&frame).unwrap();
+            let img = image::open(&path).unwrap().into_rgba32f();
+            assert_eq!(img.dimensions(), (3, 2));
+            for (k, &a) in [1u8, 0, 1, 0, 0, 1].iter().enumerate() {
+                let v = img.get_pixel(k as u32 % 3, k as u32 / 3).0[0];
+                // JPEG is lossy: within a tenth.
+                assert!((v - f32::from(a)).abs() < 0.1, "{ext} pixel {k}: {v}");
+            }
+        }
+        let path = dir.path().join("a.npy");
+        ImageOutput::create(&path).unwrap().write(&frame).unwrap();
+        let bytes = std::fs::read(&path).unwrap();
+        assert!(String::from_utf8_lossy(&bytes[..80]).contains("'descr': '|u1'"));
+        assert!(String::from_utf8_lossy(&bytes[..80]).contains("'shape': (2, 3)"));
+        assert_eq!(&bytes[bytes.len() - 6..], &[1, 0, 1, 0, 0, 1]);
+        let mut names = files_in(dir.path());
+        names.retain(|n| n.starts_with('.'));
+        assert!(names.is_empty(), "temporary files left: {names:?}");
+    }
+
+    #[test]
+    fn npy_frames_have_the_documented_shapes() {
+        let f = Frame::from_data(2, 1, FrameData::Shade(vec![[0.5, 0.25, 1.0], [0.0; 3]])).unwrap();
+        let mut bytes = Vec::new();
+        write_npy(&f, &mut bytes).unwrap();
+        let m = npy::read_f64_matrix(&bytes, 3);
+        // (1, 2, 3) is three-dimensional: the two-dimensional reader must refuse it.
+        assert!(matches!(m, Err(npy::NpyError::Shape { .. })));
+        let text = String::from_utf8_lossy(&bytes[..128]).into_owned();
+        assert!(text.contains("'descr': '<f4'") && text.contains("(1, 2, 3)"), "{text}");
+        let data: Vec<f32> = bytes[bytes.len() - 24..]
+            .chunks_exact(4)
+            .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
+            .collect();
+        assert_eq!(data, vec![0.5, 0.25, 1.0, 0.0, 0.0, 0.0]);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn written_files_get_ordinary_permissions() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.json");
+        AtomicFile::create(&path).unwrap().commit(|w| w.write_all(b"{}")).unwrap();
+        let mode = std::fs::metadata(&path).unwrap().permissions().mode();
+        // Readable by others unless the umask forbids it; never private-only by our doing.
+        assert_eq!(mode & 0o600, 0o600);
+        assert_eq!(std::fs::read(&path).unwrap(), b"{}");
+    }
+}

@@ -1,0 +1,380 @@
+//! The NumPy `.npy` format (version 1.0 written; 1.0, 2.0 and 3.0 read), for plain
+//! little-endian, C-ordered arrays.
+//!
+//! A file is the magic `\x93NUMPY`, a two-byte version, the header length (2 bytes in 1.0, 4
+//! in 2.0 and 3.0), a header that is a Python dict literal such as
+//! `{'descr': '<f4', 'fortran_order': False, 'shape': (3, 6), }` padded with spaces to a
+//! multiple of 64 bytes and ending in `\n`, then the values.
+//!
+//! ```
+//! use render::output::npy;
+//!
+//! let mut bytes = Vec::new();
+//! npy::write(&mut bytes, &[2, 3], [1.0f64, 2.0, 3.0, 4.0, 5.0, 6.0]).unwrap();
+//! let array = npy::read_f64_matrix(&bytes, 3).unwrap();
+//! assert_eq!(array.rows, 2);
+//! assert_eq!(array.values[4], 5.0);
+//! ```
+
+use std::io::{self, Write};
+
+const MAGIC: &[u8; 6] = b"\x93NUMPY";
+
+/// A value type that `.npy` files can hold.
+pub trait Element: Copy {
+    /// The NumPy type string (`'<f4'`, ...).
+    const DESCR: &'static str;
+    /// Appends the value's little-endian bytes.
+    fn put(self, out: &mut Vec<u8>);
+}
+
+macro_rules! element {
+    ($t:ty, $descr:literal) => {
+        impl Element for $t {
+            const DESCR: &'static str = $descr;
+            #[inline]
+            fn put(self, out: &mut Vec<u8>) {
+                out.extend_from_slice(&self.to_le_bytes());
+            }
+        }
+    };
+}
+element!(u8, "|u1");
+element!(u32, "<u4");
+element!(f32, "<f4");
+element!(f64, "<f8");
+
+/// Writes an array of the given `shape` (C order: the last index varies fastest).
+///
+/// # Errors
+///
+/// The writer's I/O errors; [`io::ErrorKind::InvalidInput`] if the number of values is not
+/// the product of the shape.
+pub fn write<T: Element, W: Write>(
+    w: &mut W,
+    shape: &[usize],
+    values: impl IntoIterator<Item = T>,
+) -> io::Result<()> {
+    let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+    // A one-element tuple needs its trailing comma in Python.
+    let shape_text =
+        if dims.len() == 1 { format!("({},)", dims[0]) } else { format!("({})", dims.join(", ")) };
+    let mut header =
+        format!("{{'descr': '{}', 'fortran_order': False, 'shape': {shape_text}, }}", T::DESCR);
+    // Pad so that the data starts at a multiple of 64 bytes (magic + version + u16 length = 10).
+    let unpadded = 10 + header.len() + 1;
+    header.extend(std::iter::repeat_n(' ', unpadded.next_multiple_of(64) - unpadded));
+    header.push('\n');
+    let len = u16::try_from(header.len())
+        .map_err(|_| io::Error::new(io::ErrorKind::InvalidInput, "npy header too long"))?;
+    w.write_all(MAGIC)?;
+    w.write_all(&[1, 0])?;
+    w.write_all(&len.to_le_bytes())?;
+    w.write_all(header.as_bytes())?;
+
+    let expected: usize = shape.iter().product();
+    let mut count = 0usize;
+    let mut buf = Vec::with_capacity(1 << 16);
+    for v in values {
+        v.put(&mut buf);
+        count += 1;
+        if buf.len() >= (1 << 16) - 16 {
+            w.write_all(&buf)?;
+            buf.clear();
+        }
+    }
+    w.write_all(&buf)?;
+    if count != expected {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("npy: {count} values for shape {shape:?}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Why an `.npy` array could not be read.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum NpyError {
+    /// The data does not start with the `.npy` magic.
+    #[error("not a NumPy .npy file")]
+    NotNpy,
+    /// A format version other than 1.0, 2.0 or 3.0.
+    #[error("unsupported .npy format version {0}.{1}")]
+    Version(u8, u8),
+    /// The file ends inside the header.
+    #[error("the .npy header is truncated")]
+    TruncatedHeader,
+    /// The header is not the expected dict.
+    #[error("malformed .npy header: {0}")]
+    Header(String),
+    /// An element type other than little-endian float32 or float64.
+    #[error("unsupported dtype '{0}': expected little-endian float32 ('<f4') or float64 ('<f8')")]
+    Dtype(String),
+    /// The array is stored in Fortran (column-major) order.
+    #[error("the array is in Fortran order: expected C order")]
+    FortranOrder,
+    /// The array's shape is not `(N, columns)`.
+    #[error("array shape {found}: expected (N, {columns})")]
+    Shape {
+        /// The shape found, as written in the header.
+        found: String,
+        /// The expected number of columns.
+        columns: usize,
+    },
+    /// The data is shorter or longer than the shape says.
+    #[error("the array data is {found} bytes, but shape and dtype call for {expected}")]
+    Length {
+        /// Bytes the header promises.
+        expected: usize,
+        /// Bytes present.
+        found: usize,
+    },
+}
+
+/// A two-dimensional floating-point array read from `.npy`, widened to `f64` (exactly).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Matrix {
+    /// Number of rows.
+    pub rows: usize,
+    /// Number of columns.
+    pub columns: usize,
+    /// The values in C order (`values[r * columns + c]`).
+    pub values: Vec<f64>,
+    /// Whether the file held `f32` (`'<f4'`) rather than `f64`.
+    pub was_f32: bool,
+}
+
+/// Reads an `(N, columns)` little-endian float32 or float64 array in C order.
+///
+/// # Errors
+///
+/// [`NpyError`] naming what is wrong: not `.npy`, another dtype (integers, big-endian,
+/// ...), Fortran order, another shape, or data shorter or longer than the shape.
+pub fn read_f64_matrix(bytes: &[u8], columns: usize) -> Result<Matrix, NpyError> {
+    if bytes.len() < 8 || &bytes[..6] != MAGIC {
+        return Err(NpyError::NotNpy);
+    }
+    let (major, minor) = (bytes[6], bytes[7]);
+    let (header_len, start) = match major {
+        1 if bytes.len() >= 10 => (usize::from(u16::from_le_bytes([bytes[8], bytes[9]])), 10usize),
+        2 | 3 if bytes.len() >= 12 => {
+            let n = u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]);
+            (usize::try_from(n).map_err(|_| NpyError::TruncatedHeader)?, 12)
+        }
+        1..=3 => return Err(NpyError::TruncatedHeader),
+        _ => return Err(NpyError::Version(major, minor)),
+    };
+    let end = start.checked_add(header_len).ok_or(NpyError::TruncatedHeader)?;
+    let header = bytes.get(start..end).ok_or(NpyError::TruncatedHeader)?;
+    let header = std::str::from_utf8(header)
+        .map_err(|_| NpyError::Header("the header is not text".into()))?;
+    let fields = Header::parse(header)?;
+
+    let size = match fields.descr.as_str() {
+        "<f4" => 4,
+        "<f8" => 8,
+        other => return Err(NpyError::Dtype(other.to_string())),
+    };
+    if fields.fortran_order {
+        return Err(NpyError::FortranOrder);
+    }
+    let shape_error = || NpyError::Shape { found: fields.shape_text.clone(), columns };
+    let [rows, cols] = fields.shape[..] else { return Err(shape_error()) };
+    if cols != columns {
+        return Err(shape_error());
+    }
+    let data = &bytes[end..];
+    let expected = rows
+        .checked_mul(cols)
+        .and_then(|n| n.checked_mul(size))
+        .ok_or(NpyError::Length { expected: usize::MAX, found: data.len() })?;
+    if data.len() != expected {
+        return Err(NpyError::Length { expected, found: data.len() });
+    }
+    let values = if size == 4 {
+        data.chunks_exact(4)
+            .map(|c| f64::from(f32::from_le_bytes(c.try_into().expect("4 bytes"))))
+            .collect()
+    } else {
+        data.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes"))).collect()
+    };
+    Ok(Matrix { rows, columns: cols, values, was_f32: size == 4 })
+}
+
+/// The three keys of a `.npy` header.
+struct Header {
+    descr: String,
+    fortran_order: bool,
+    shape: Vec<usize>,
+    shape_text: String,
+}
+
+impl Header {
+    /// Parses `{'descr': '<f8', 'fortran_order': False, 'shape': (3, 6), }`: a dict literal with
+    /// exactly these keys, in any order, single- or double-quoted.
+    fn parse(text: &str) -> Result<Self, NpyError> {
+        let bad = |why: &str| NpyError::Header(why.to_string());
+        let body = text
+            .trim()
+            .strip_prefix('{')
+            .and_then(|t| t.strip_suffix('}'))
+            .ok_or_else(|| bad("expected a {...} dict"))?;
+        let (mut descr, mut fortran, mut shape) = (None, None, None);
+        let mut rest = body.trim_start();
+        while !rest.is_empty() {
+            let (key, after) = quoted(rest).ok_or_else(|| bad("expected a quoted key"))?;
+            let after = after.trim_start().strip_prefix(':').ok_or_else(|| bad("expected ':'"))?;
+            let after = after.trim_start();
+            let after = match key {
+                "descr" => {
+                    let (v, a) = quoted(after).ok_or_else(|| bad("descr is not a string"))?;
+                    descr = Some(v.to_string());
+                    a
+                }
+                "fortran_order" => {
+                    let (v, a) = if let Some(a) = after.strip_prefix("False") {
+                        (false, a)
+                    } else if let Some(a) = after.strip_prefix("True") {
+                        (true, a)
+                    } else {
+                        return Err(bad("fortran_order is not True or False"));
+                    };
+                    fortran = Some(v);
+                    a
+                }
+                "shape" => {
+                    let inner =
+                        after.strip_prefix('(').ok_or_else(|| bad("shape is not a tuple"))?;
+                    let close = inner.find(')').ok_or_else(|| bad("shape is not a tuple"))?;
+                    let dims = inner[..close]
+                        .split(',')
+                        .map(str::trim)
+                        .filter(|d| !d.is_empty())
+                        .map(|d| d.parse::<usize>().map_err(|_| bad("shape has a bad dimension")))
+                        .collect::<Result<Vec<_>, _>>()?;
+                    shape = Some((dims, format!("({})", &inner[..close])));
+                    &inner[close + 1..]
+                }
+                other => return Err(bad(&format!("unexpected key '{other}'"))),
+            };
+            let after = after.trim_start();
+            rest = match after.strip_prefix(',') {
+                Some(a) => a.trim_start(),
+                None if after.is_empty() => after,
+                None => return Err(bad("expected ',' between entries")),
+            };
+        }
+        let (shape, shape_text) = shape.ok_or_else(|| bad("no 'shape' key"))?;
+        Ok(Self {
+            descr: descr.ok_or_else(|| bad("no 'descr' key"))?,
+            fortran_order: fortran.ok_or_else(|| bad("no 'fortran_order' key"))?,
+            shape,
+            shape_text,
+        })
+    }
+}
+
+/// A leading `'...'` or `"..."` string and the text after it.
+fn quoted(text: &str) -> Option<(&str, &str)> {
+    let q = text.chars().next().filter(|&c| c == '\'' || c == '"')?;
+    let inner = &text[1..];
+    let end = inner.find(q)?;
+    Some((&inner[..end], &inner[end + 1..]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A `.npy` file as NumPy 1.26 writes `np.arange(6, dtype='<f4').reshape(2, 3)`, bytes
+    /// spelt out by hand from the format description: an independent check of the writer.
+    fn numpy_written_f4_2x3() -> Vec<u8> {
+        let mut v = b"\x93NUMPY\x01\x00\x76\x00".to_vec();
+        let mut h = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }".to_string();
+        while (10 + h.len() + 1) % 64 != 0 {
+            h.push(' ');
+        }
+        h.push('\n');
+        assert_eq!(h.len(), 0x76);
+        v.extend_from_slice(h.as_bytes());
+        for x in 0..6 {
+            v.extend_from_slice(&(x as f32).to_le_bytes());
+        }
+        v
+    }
+
+    #[test]
+    fn writer_matches_numpy_layout() {
+        let mut out = Vec::new();
+        write(&mut out, &[2, 3], (0..6).map(|x| x as f32)).unwrap();
+        assert_eq!(out, numpy_written_f4_2x3());
+        assert_eq!((out.len() - 24) % 64, 0);
+    }
+
+    #[test]
+    fn reads_f32_and_f64_and_other_versions() {
+        let m = read_f64_matrix(&numpy_written_f4_2x3(), 3).unwrap();
+        assert_eq!((m.rows, m.columns, m.was_f32), (2, 3, true));
+        assert_eq!(m.values, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0]);
+
+        let mut out = Vec::new();
+        write(&mut out, &[1, 2], [0.1f64, -2.5]).unwrap();
+        let m = read_f64_matrix(&out, 2).unwrap();
+        assert_eq!(m.values, vec![0.1, -2.5]);
+        assert!(!m.was_f32);
+
+        // Version 2.0: four-byte header length, double quotes, keys reordered.
+        let header = "{\"shape\": (1, 2), \"fortran_order\": False, \"descr\": \"<f8\"}\n";
+        let mut v2 = b"\x93NUMPY\x02\x00".to_vec();
+        v2.extend_from_slice(&(header.len() as u32).to_le_bytes());
+        v2.extend_from_slice(header.as_bytes());
+        v2.extend_from_slice(&1.5f64.to_le_bytes());
+        v2.extend_from_slice(&(-3.0f64).to_le_bytes());
+        assert_eq!(read_f64_matrix(&v2, 2).unwrap().values, vec![1.5, -3.0]);
+
+        let mut empty = Vec::new();
+        write::<f64, _>(&mut empty, &[0, 6], []).unwrap();
+        assert_eq!(read_f64_matrix(&empty, 6).unwrap().rows, 0);
+    }
+
+    #[test]
+    fn bad_arrays_are_named() {
+        let good = numpy_written_f4_2x3();
+        assert_eq!(read_f64_matrix(b"hello world", 3), Err(NpyError::NotNpy));
+        assert_eq!(read_f64_matrix(&good[..20], 3), Err(NpyError::TruncatedHeader));
+        assert_eq!(
+            read_f64_matrix(&good[..good.len() - 1], 3),
+            Err(NpyError::Length { expected: 24, found: 23 })
+        );
+        assert_eq!(
+            read_f64_matrix(&good, 6),
+            Err(NpyError::Shape { found: "(2, 3)".into(), columns: 6 })
+        );
+        let swap = |from: &str, to: &str| {
+            assert_eq!(from.len(), to.len());
+            let mut v = good.clone();
+            let at = v.windows(from.len()).position(|w| w == from.as_bytes()).unwrap();
+            v[at..at + from.len()].copy_from_slice(to.as_bytes());
+            v
+        };
+        // Same-length substitutions keep the header length valid.
+        assert_eq!(read_f64_matrix(&swap("<f4", "<i4"), 3), Err(NpyError::Dtype("<i4".into())));
+        assert_eq!(read_f64_matrix(&swap("<f4", ">f4"), 3), Err(NpyError::Dtype(">f4".into())));
+        assert_eq!(read_f64_matrix(&swap("False", "True "), 3), Err(NpyError::FortranOrder));
+        assert!(matches!(
+            read_f64_matrix(&swap("(2, 3)", "(6,)  "), 3),
+            Err(NpyError::Shape { .. })
+        ));
+        let mut v9 = good.clone();
+        v9[6] = 9;
+        assert_eq!(read_f64_matrix(&v9, 3), Err(NpyError::Version(9, 0)));
+    }
+
+    #[test]
+    fn write_checks_the_value_count() {
+        let mut out = Vec::new();
+        let e = write(&mut out, &[2, 2], [1u32, 2, 3]).unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::InvalidInput);
+    }
+}

@@ -1,0 +1,360 @@
+//! The render loop: one primary ray per pixel, traced in parallel tiles, generic over the back
+//! end.
+//!
+//! [`render`] fills a [`Frame`] for its [`Mode`](crate::frame::Mode):
+//!
+//! - `alpha`: [`Accel::any_hit`] with `t_max = inf` (the report's image). No hit point is
+//!   computed at all.
+//! - `depth`: [`Accel::closest_hit`]'s `t`. Camera rays have unit direction (rounded to the
+//!   back end's precision), so `t` is the distance from the eye.
+//! - `normal`: the unit geometric normal `(b - a) x (c - a)` of the hit triangle, computed in
+//!   `f64` from the mesh, **as wound** (not flipped towards the viewer), so inside-out faces
+//!   show.
+//! - `shade`: Lambert shading, white surface, one directional light and no shadows:
+//!   `AMBIENT + (1 - AMBIENT) * max(0, n . l)` in all three channels (see [`AMBIENT`],
+//!   [`light_direction`]). `n` is the geometric normal flipped to face the viewer, or, when the
+//!   mesh has vertex normals, the barycentric interpolation of the hit triangle's corner
+//!   normals (normalised, flipped to the viewer's side of the triangle).
+//! - `prim`: the hit triangle's index.
+//!
+//! Only the nearest hit's triangle is looked up for normals; traversal computes nothing but
+//! `t` and barycentrics.
+//!
+//! # Parallelism and progress
+//!
+//! The image is cut into bands of at most [`TILE`] rows, each traced as a row of
+//! `TILE x TILE` tiles (neighbouring rays visit the same BVH nodes, which keeps them in
+//! cache). Bands are shared among the threads of the current rayon pool: the caller picks the
+//! thread count by running [`render`] inside `ThreadPool::install`. After each tile,
+//! `progress` is called with the number of pixels just finished (from any thread), so a
+//! caller can drive a progress bar; the calls add up to `width * height`.
+
+use intersect::{Intersector, Real};
+use rayon::prelude::*;
+
+use crate::accel::Accel;
+use crate::camera::Camera;
+use crate::frame::{Frame, FrameData};
+use crate::scene::Mesh;
+
+/// Side of the square tiles traced together, in pixels.
+pub const TILE: u32 = 16;
+
+/// The ambient term of `shade`: the brightness of a surface facing away from the light.
+pub const AMBIENT: f32 = 0.1;
+
+/// The direction towards the light in `shade` mode, for `camera`: from the upper left and
+/// behind the camera, `normalize(-right + up' - 2 fwd)`. A surface facing the camera receives
+/// `2 / sqrt(6) = 82 %` of the full light.
+#[must_use]
+pub fn light_direction(camera: &Camera) -> [f64; 3] {
+    let (r, u, f) = (camera.right(), camera.up(), camera.forward());
+    let l: [f64; 3] = core::array::from_fn(|k| -r[k] + u[k] - 2.0 * f[k]);
+    let len = dot(l, l).sqrt();
+    l.map(|x| x / len)
+}
+
+/// Renders `mesh` as seen by `camera` into `frame`, in `frame`'s mode and size. See the
+/// [module documentation](self).
+///
+/// `accel` must have been built from `mesh`'s triangles in mesh order
+/// ([`Accel::from_mesh`]): hits name triangles by mesh index.
+///
+/// # Panics
+///
+/// If `accel` and `mesh` have different numbers of triangles.
+pub fn render<I: Intersector>(
+    accel: &Accel<I>,
+    mesh: &Mesh,
+    camera: &Camera,
+    frame: &mut Frame,
+    progress: &(impl Fn(usize) + Sync),
+) {
+    assert_eq!(accel.len(), mesh.len(), "the accelerator was not built from this mesh");
+    let (w, h) = (frame.width(), frame.height());
+    let inf = <I::Real as Real>::INFINITY;
+    let ray = |i, j| camera.ray::<I::Real>(i, j, w, h);
+    let light = light_direction(camera);
+    match frame.data_mut() {
+        FrameData::Alpha(px) => {
+            fill(px, w, h, progress, |i, j| u8::from(accel.any_hit(&ray(i, j), inf)));
+        }
+        FrameData::Depth(px) => fill(px, w, h, progress, |i, j| {
+            accel.closest_hit(&ray(i, j)).map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
+        }),
+        FrameData::Normal(px) => fill(px, w, h, progress, |i, j| {
+            accel.closest_hit(&ray(i, j)).map_or([0.0; 3], |hit| {
+                geometric_normal(mesh, hit.prim as usize).map_or([0.0; 3], |n| n.map(|c| c as f32))
+            })
+        }),
+        FrameData::Shade(px) => fill(px, w, h, progress, |i, j| {
+            accel.closest_hit(&ray(i, j)).map_or([0.0; 3], |hit| {
+                let dir = camera.direction(i, j, w, h);
+                let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
+                let n = shading_normal(mesh, hit.prim as usize, u, v, dir);
+                let lambert = dot(n, light).max(0.0) as f32;
+                [AMBIENT + (1.0 - AMBIENT) * lambert; 3]
+            })
+        }),
+        FrameData::Prim(px) => fill(px, w, h, progress, |i, j| {
+            accel.closest_hit(&ray(i, j)).map_or(u32::MAX, |hit| hit.prim)
+        }),
+    }
+}
+
+/// Computes every pixel of a `w x h` row-major buffer with `pixel(i, j)`, in parallel bands
+/// of tiles, reporting finished pixels to `progress`.
+fn fill<P: Send>(
+    px: &mut [P],
+    w: u32,
+    h: u32,
+    progress: &(impl Fn(usize) + Sync),
+    pixel: impl Fn(u32, u32) -> P + Sync,
+) {
+    debug_assert_eq!(px.len(), w as usize * h as usize);
+    // Short bands for short images, so that every thread gets a few to balance the load.
+    let threads = rayon::current_num_threads() as u32;
+    let band_rows = h.div_ceil(4 * threads).clamp(1, TILE);
+    px.par_chunks_mut(band_rows as usize * w as usize).enumerate().for_each(|(band, rows)| {
+        let j0 = band as u32 * band_rows;
+        let rows_here = rows.len() as u32 / w;
+        for i0 in (0..w).step_by(TILE as usize) {
+            let i1 = (i0 + TILE).min(w);
+            for dj in 0..rows_here {
+                let row = &mut rows[(dj * w) as usize..][..w as usize];
+                for i in i0..i1 {
+                    row[i as usize] = pixel(i, j0 + dj);
+                }
+            }
+            progress(((i1 - i0) * rows_here) as usize);
+        }
+    });
+}
+
+/// The unit normal `(b - a) x (c - a)` of triangle `index`, or `None` if it has no area.
+#[must_use]
+fn geometric_normal(mesh: &Mesh, index: usize) -> Option<[f64; 3]> {
+    let [a, b, c] = mesh.triangles[index].map(|v| mesh.positions[v as usize]);
+    normalize(cross(sub(b, a), sub(c, a)))
+}
+
+/// The normal used for shading at barycentrics `(u, v)` of triangle `index`, seen along
+/// `dir`: facing the viewer (`n . dir < 0`).
+fn shading_normal(mesh: &Mesh, index: usize, u: f64, v: f64, dir: [f64; 3]) -> [f64; 3] {
+    // A triangle the kernel hit has area in the back end's precision; should it have none in
+    // f64 (cannot happen for f64 back ends), light it as if it faced the viewer.
+    let geo = geometric_normal(mesh, index).unwrap_or(dir.map(|x| -x));
+    let facing = if dot(geo, dir) > 0.0 { geo.map(|x| -x) } else { geo };
+    let Some(normals) = &mesh.normals else { return facing };
+    let [na, nb, nc] = normals[index].map(|n| n.map(f64::from));
+    let w = 1.0 - u - v;
+    let smooth: [f64; 3] = core::array::from_fn(|k| w * na[k] + u * nb[k] + v * nc[k]);
+    match normalize(smooth) {
+        // Vertex normals may be wound either way: put them on the viewer's side.
+        Some(n) if dot(n, facing) < 0.0 => n.map(|x| -x),
+        Some(n) => n,
+        None => facing,
+    }
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
+    let len = dot(v, v).sqrt();
+    (len > 0.0 && len.is_finite()).then(|| v.map(|x| x / len))
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    use intersect::{Ray, Triangle, TriangleHit};
+
+    use super::*;
+    use crate::frame::Mode;
+
+    /// A plain f64 ray-triangle test (Cramer's rule on the 3x3 system), independent of the
+    /// back ends: enough for scenes whose answers are known analytically.
+    struct Reference;
+
+    impl Intersector for Reference {
+        type Real = f64;
+        type Prim = Triangle<f64>;
+        type RayData = ();
+        const NAME: &'static str = "reference";
+
+        fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
+            *tri
+        }
+        fn prepare_ray(&self, _: &Ray<f64>) {}
+        fn intersect(
+            &self,
+            p: &Triangle<f64>,
+            ray: &Ray<f64>,
+            _: &(),
+            t_max: f64,
+        ) -> Option<TriangleHit<f64>> {
+            let (e1, e2) = (sub(p.b, p.a), sub(p.c, p.a));
+            let s = sub(ray.origin, p.a);
+            let m = [e1, e2, ray.dir.map(|x| -x)];
+            let det = dot(m[0], cross(m[1], m[2]));
+            if det == 0.0 {
+                return None;
+            }
+            let u = dot(s, cross(m[1], m[2])) / det;
+            let v = dot(m[0], cross(s, m[2])) / det;
+            let t = dot(m[0], cross(m[1], s)) / det;
+            (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0 && t <= t_max).then_some(TriangleHit {
+                t,
+                u,
+                v,
+            })
+        }
+    }
+
+    /// A square `[-1, 1]^2` at `z = 4`, two triangles wound towards -z (facing the origin
+    /// camera), with optional vertex normals tilted towards +x on the right edge.
+    fn square(normals: bool) -> Mesh {
+        let obj = if normals {
+            "v -1 -1 4\nv 1 -1 4\nv 1 1 4\nv -1 1 4\n\
+             vn 0 0 -1\nvn 0.6 0 -0.8\n\
+             f 1//1 4//1 3//2\nf 1//1 3//2 2//2\n"
+        } else {
+            "v -1 -1 4\nv 1 -1 4\nv 1 1 4\nv -1 1 4\nf 1 4 3\nf 1 3 2\n"
+        };
+        Mesh::from_obj_str(obj, "square.obj").unwrap()
+    }
+
+    fn run(mesh: &Mesh, mode: Mode, w: u32, h: u32) -> Frame {
+        let accel = Accel::from_mesh(Reference, mesh);
+        let mut frame = Frame::new(mode, w, h).unwrap();
+        let done = AtomicUsize::new(0);
+        render(&accel, mesh, &Camera::origin(), &mut frame, &|n| {
+            done.fetch_add(n, Ordering::Relaxed);
+        });
+        assert_eq!(done.into_inner(), (w * h) as usize, "progress adds up to the pixel count");
+        frame
+    }
+
+    /// Whether the origin camera's ray through pixel (i, j) meets the square: it crosses
+    /// z = 4 at 4 * (x, y) / z of its direction.
+    fn in_square(i: u32, j: u32, w: u32, h: u32) -> bool {
+        let d = Camera::origin().direction(i, j, w, h);
+        let (x, y) = (4.0 * d[0] / d[2], 4.0 * d[1] / d[2]);
+        x.abs() <= 1.0 && y.abs() <= 1.0
+    }
+
+    #[test]
+    fn alpha_matches_the_analytic_square() {
+        // 37 x 23: odd sizes, bands and tiles that do not divide the image.
+        let (w, h) = (37, 23);
+        let f = run(&square(false), Mode::Alpha, w, h);
+        let FrameData::Alpha(px) = f.data() else { panic!() };
+        let mut hits = 0;
+        for j in 0..h {
+            for i in 0..w {
+                assert_eq!(px[(j * w + i) as usize] == 1, in_square(i, j, w, h), "({i},{j})");
+                hits += u32::from(px[(j * w + i) as usize]);
+            }
+        }
+        assert!(hits > 50 && hits < w * h);
+    }
+
+    #[test]
+    fn depth_is_the_distance_to_the_plane() {
+        let (w, h) = (20, 20);
+        let f = run(&square(false), Mode::Depth, w, h);
+        let FrameData::Depth(px) = f.data() else { panic!() };
+        for j in 0..h {
+            for i in 0..w {
+                let d = Camera::origin().direction(i, j, w, h);
+                let t = px[(j * w + i) as usize];
+                if in_square(i, j, w, h) {
+                    let expect = 4.0 / d[2];
+                    assert!((f64::from(t) - expect).abs() < 1e-5, "({i},{j}) {t} vs {expect}");
+                } else {
+                    assert_eq!(t, f32::INFINITY);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn normal_prim_and_shade_of_a_flat_square() {
+        let (w, h) = (16, 16);
+        let mesh = square(false);
+        let centre = (8 * w + 8) as usize;
+        let corner = 0usize;
+        assert!(in_square(8, 8, w, h));
+        let n = run(&mesh, Mode::Normal, w, h);
+        let FrameData::Normal(px) = n.data() else { panic!() };
+        assert_eq!(px[centre], [0.0, 0.0, -1.0]);
+        assert_eq!(px[corner] == [0.0; 3], !in_square(0, 0, w, h));
+
+        let p = run(&mesh, Mode::Prim, w, h);
+        let FrameData::Prim(px) = p.data() else { panic!() };
+        // Triangle 0 is (1, 4, 3): the upper-left half (x < y); triangle 1 the lower right.
+        assert_eq!(px[(4 * w + 6) as usize], 0, "upper left, above the diagonal");
+        assert_eq!(px[(11 * w + 9) as usize], 1, "lower right, below the diagonal");
+
+        let s = run(&mesh, Mode::Shade, w, h);
+        let FrameData::Shade(px) = s.data() else { panic!() };
+        let expect = AMBIENT + (1.0 - AMBIENT) * (2.0 / 6f32.sqrt());
+        assert!((px[centre][0] - expect).abs() < 1e-6, "{:?} vs {expect}", px[centre]);
+        assert_eq!(px[centre][0], px[centre][2]);
+    }
+
+    #[test]
+    fn shade_interpolates_vertex_normals() {
+        let (w, h) = (32, 32);
+        let s = run(&square(true), Mode::Shade, w, h);
+        let FrameData::Shade(px) = s.data() else { panic!() };
+        let light = light_direction(&Camera::origin());
+        // On each pixel, rebuild the expected value from the analytic hit point.
+        for j in 0..h {
+            for i in 0..w {
+                if !in_square(i, j, w, h) {
+                    continue;
+                }
+                let d = Camera::origin().direction(i, j, w, h);
+                let x = 4.0 * d[0] / d[2];
+                // Normals are (0,0,-1) at x = -1 and (0.6,0,-0.8) at x = 1, linear in x.
+                let s = (x + 1.0) / 2.0;
+                let n = normalize([0.6 * s, 0.0, -1.0 + 0.2 * s]).unwrap();
+                let expect = AMBIENT + (1.0 - AMBIENT) * dot(n, light).max(0.0) as f32;
+                let got = px[(j * w + i) as usize][1];
+                assert!((got - expect).abs() < 1e-5, "({i},{j}): {got} vs {expect}");
+            }
+        }
+    }
+
+    #[test]
+    fn thread_count_does_not_change_the_image() {
+        let mesh = square(true);
+        let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+        let three = rayon::ThreadPoolBuilder::new().num_threads(3).build().unwrap();
+        for mode in Mode::ALL {
+            let a = one.install(|| run(&mesh, mode, 29, 41));
+            let b = three.install(|| run(&mesh, mode, 29, 41));
+            assert_eq!(a, b, "{mode}");
+        }
+    }
+
+    #[test]
+    fn light_is_upper_left_and_behind() {
+        let l = light_direction(&Camera::origin());
+        let k = 1.0 / 6f64.sqrt();
+        assert!((l[0] + k).abs() < 1e-15 && (l[1] - k).abs() < 1e-15);
+        assert!((l[2] + 2.0 * k).abs() < 1e-15);
+    }
+}
