@@ -1,1 +1,190 @@
-//! Helpers shared by the benches: results/ paths and CSV writing (placeholder).
+//! Helpers shared by the benches: where criterion keeps its estimates, where results go, and
+//! the CSV rows the benches write.
+//!
+//! The benches measure with criterion and then turn its estimates into `results/*.csv`: after
+//! the groups have run, [`mean_ns`] reads `<criterion dir>/<group>/<function>/new/estimates.json`
+//! (the mean's point estimate) for each measurement and the bench writes one CSV row per
+//! comparison. Reading criterion's own files keeps one source of truth for every figure.
+//!
+//! ```
+//! use wedge_benches::{GaOpsRow, Target};
+//!
+//! let row = GaOpsRow::new("rotor_rotate", "f32", Some(2.2), Some(2.0), Target::RatioToGlam(1.1), "cpu");
+//! assert_eq!(row.ratio_ga_over_glam, Some(1.1));
+//! assert_eq!(row.meets_target, Some(true));
+//! ```
+
+#![deny(missing_docs)]
+
+use std::fs;
+use std::io;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, SystemTime};
+
+use serde::Serialize;
+
+/// The workspace root (the parent of this crate's manifest directory).
+#[must_use]
+pub fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("benches/ has a parent").to_path_buf()
+}
+
+/// `results/` at the workspace root.
+#[must_use]
+pub fn results_dir() -> PathBuf {
+    workspace_root().join("results")
+}
+
+/// True when `WEDGE_BENCH_QUICK=1`: benches then run for a few milliseconds each, enough for
+/// CI to check that they build and run, and write their CSV under the criterion directory
+/// instead of `results/` so that smoke runs never overwrite real measurements.
+#[must_use]
+pub fn quick_mode() -> bool {
+    std::env::var("WEDGE_BENCH_QUICK").is_ok_and(|v| v == "1")
+}
+
+/// Warm-up and measurement time for one benchmark: about 20 ms each in quick mode, criterion's
+/// usual 3 s and 5 s otherwise.
+#[must_use]
+pub fn bench_times() -> (Duration, Duration) {
+    if quick_mode() {
+        (Duration::from_millis(20), Duration::from_millis(20))
+    } else {
+        (Duration::from_secs(3), Duration::from_secs(5))
+    }
+}
+
+/// The directory criterion writes to, found the way criterion finds it: `$CRITERION_HOME`,
+/// else `$CARGO_TARGET_DIR/criterion`, else the target directory reported by `cargo metadata`
+/// (cargo sets `$CARGO` for the benches it runs), else `target/criterion`.
+#[must_use]
+pub fn criterion_dir() -> PathBuf {
+    if let Some(home) = std::env::var_os("CRITERION_HOME") {
+        return PathBuf::from(home);
+    }
+    if let Some(target) = std::env::var_os("CARGO_TARGET_DIR") {
+        return PathBuf::from(target).join("criterion");
+    }
+    let from_metadata = std::env::var_os("CARGO").and_then(|cargo| {
+        let output = Command::new(cargo)
+            .args(["metadata", "--format-version", "1", "--no-deps"])
+            .output()
+            .ok()?;
+        let metadata: serde_json::Value = serde_json::from_slice(&output.stdout).ok()?;
+        Some(PathBuf::from(metadata.get("target_directory")?.as_str()?))
+    });
+    from_metadata.unwrap_or_else(|| PathBuf::from("target")).join("criterion")
+}
+
+/// The mean time per iteration in nanoseconds that criterion estimated for `group/function`,
+/// or `None` when there is no estimate written at or after `since` (the benchmark was filtered
+/// out of this run, or failed).
+#[must_use]
+pub fn mean_ns(
+    criterion_dir: &Path,
+    group: &str,
+    function: &str,
+    since: SystemTime,
+) -> Option<f64> {
+    let path = criterion_dir.join(group).join(function).join("new").join("estimates.json");
+    let fresh = fs::metadata(&path).and_then(|m| m.modified()).is_ok_and(|t| t >= since);
+    if !fresh {
+        return None;
+    }
+    let text = fs::read_to_string(&path).ok()?;
+    let estimates: serde_json::Value = serde_json::from_str(&text).ok()?;
+    estimates.get("mean")?.get("point_estimate")?.as_f64()
+}
+
+/// The CPU model string from `/proc/cpuinfo`, or `"unknown"`.
+#[must_use]
+pub fn cpu_model() -> String {
+    fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|info| {
+            info.lines()
+                .find(|line| line.starts_with("model name"))
+                .and_then(|line| line.split_once(':'))
+                .map(|(_, model)| model.trim().to_owned())
+        })
+        .unwrap_or_else(|| "unknown".to_owned())
+}
+
+/// What a GA operation is held to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Target {
+    /// At most this many times glam's time for the same operation.
+    RatioToGlam(f64),
+    /// At most this many nanoseconds per operation (no glam counterpart).
+    MaxNs(f64),
+    /// Measured for information only.
+    None,
+}
+
+/// One row of `results/ga_ops.csv`: a GA operation beside its glam counterpart.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GaOpsRow {
+    /// The operation, e.g. `rotor_rotate_vs_quat_mul_vec3`.
+    pub op: String,
+    /// `f32` or `f64`.
+    pub precision: String,
+    /// Mean nanoseconds per operation with `ga`.
+    pub ga_ns: Option<f64>,
+    /// Mean nanoseconds per operation with glam, where glam has the operation.
+    pub glam_ns: Option<f64>,
+    /// `ga_ns / glam_ns`.
+    pub ratio_ga_over_glam: Option<f64>,
+    /// The target in words, e.g. `ratio<=1.1` or `ga_ns<3`.
+    pub target: String,
+    /// Whether the target is met (empty when there is no target or no measurement).
+    pub meets_target: Option<bool>,
+    /// The CPU the figures were measured on.
+    pub cpu: String,
+}
+
+impl GaOpsRow {
+    /// A row from two measurements (either may be missing) and the target they are held to.
+    #[must_use]
+    pub fn new(
+        op: &str,
+        precision: &str,
+        ga_ns: Option<f64>,
+        glam_ns: Option<f64>,
+        target: Target,
+        cpu: &str,
+    ) -> Self {
+        let ratio = ga_ns.zip(glam_ns).map(|(ga, glam)| ga / glam);
+        let (target_text, meets) = match target {
+            Target::RatioToGlam(max) => (format!("ratio<={max}"), ratio.map(|r| r <= max)),
+            Target::MaxNs(max) => (format!("ga_ns<{max}"), ga_ns.map(|ns| ns < max)),
+            Target::None => (String::new(), None),
+        };
+        Self {
+            op: op.to_owned(),
+            precision: precision.to_owned(),
+            ga_ns,
+            glam_ns,
+            ratio_ga_over_glam: ratio,
+            target: target_text,
+            meets_target: meets,
+            cpu: cpu.to_owned(),
+        }
+    }
+}
+
+/// Writes rows as CSV with a header row, creating the parent directory.
+///
+/// # Errors
+///
+/// If the directory or file cannot be created or written.
+pub fn write_csv<R: Serialize>(path: &Path, rows: &[R]) -> io::Result<()> {
+    if let Some(parent) = path.parent() {
+        fs::create_dir_all(parent)?;
+    }
+    let mut writer = csv::Writer::from_path(path)?;
+    for row in rows {
+        writer.serialize(row)?;
+    }
+    writer.flush()
+}
