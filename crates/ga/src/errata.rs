@@ -99,11 +99,13 @@
 //! *Right:* with the report's own inner product (figure 2.7: `e12 . e12 = -1`, since
 //! `e12 e12 = -1`), two bivectors of the same orientation give a *negative* scalar: for
 //! `A = alpha N`, `B = beta N` with a unit bivector `N`, `A . B = -alpha beta`. As written, the
-//! test rejects every point inside the triangle and accepts points outside two edges. Compare
-//! with `-(A . B)`, with the scalar product `A . B†` (the sum of coefficient products), or
-//! compare the duals `A*` and `B*` (the triangle normals) with a vector dot product.
+//! test rejects every point inside the triangle; since it accepts a point only when all three
+//! `s` are positive, i.e. when the point lies outside all three edges, which no point does, it
+//! accepts nothing at all. Compare with `-(A . B)`, with the scalar product `<A B†>_0` (the sum
+//! of coefficient products), or compare the duals `A*` and `B*` (the triangle normals) with a
+//! vector dot product; `ga::g3::geometry::point_in_triangle` accepts `s <= 0`.
 //!
-//! *Test:* `errata.rs::e7_report_sign_rule_rejects_inside_points`.
+//! *Test:* `errata.rs::e7_report_sign_rule_accepts_no_point`.
 //!
 //! # E8. "If they are parallel, the dot product is 1" (section 2.2.1)
 //!
