@@ -20,7 +20,7 @@ use raytrace::scenes::{GENERATED_HEADER, generated_files};
 
 /// Writes the generated test scenes (OBJ files and a README) to the workspace's obj/ folder.
 #[derive(Parser)]
-#[command(version, about)]
+#[command(version)]
 struct Args {
     /// Folder to write to [default: the obj/ folder of the workspace this program was built from]
     #[arg(long, value_name = "DIR")]
@@ -45,7 +45,7 @@ fn main() -> ExitCode {
 fn run(args: &Args) -> Result<ExitCode> {
     let dir = args.out.clone().unwrap_or_else(default_out_dir);
     let files = generated_files();
-    let mut stale = Vec::new();
+    let (mut stale, mut written) = (Vec::new(), 0);
     for (name, contents) in &files {
         let path = dir.join(name);
         let current = match fs::read(&path) {
@@ -63,6 +63,7 @@ fn run(args: &Args) -> Result<ExitCode> {
                 fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
                 write_atomically(&path, contents.as_bytes())?;
                 println!("wrote {}", path.display());
+                written += 1;
             }
         }
     }
@@ -75,8 +76,11 @@ fn run(args: &Args) -> Result<ExitCode> {
         }
     }
     if stale.is_empty() {
+        let unchanged = files.len() - written;
         if args.check {
-            println!("{}: all {} generated files up to date", dir.display(), files.len());
+            println!("{}: all {unchanged} generated files up to date", dir.display());
+        } else {
+            println!("{}: {written} written, {unchanged} already up to date", dir.display());
         }
         return Ok(ExitCode::SUCCESS);
     }
