@@ -1,0 +1,216 @@
+//! Watertight ray/triangle intersection: S. Woop, C. Benthin, I. Wald, "Watertight
+//! Ray/Triangle Intersection", Journal of Computer Graphics Techniques 2(1), 2013.
+//!
+//! # Derivation (the paper's steps, in the order the code takes them)
+//!
+//! 1. **Per ray: a coordinate frame where the ray is the +z axis through the origin**
+//!    (paper section 3, Fig. 5). Let `kz` be the axis where `|d|` is largest, `kx`, `ky` the
+//!    next two cyclically; if `d[kz] < 0` swap `kx` and `ky`, so that the permutation plus
+//!    the sign of `d[kz]` preserve orientation and every triangle keeps its winding. The
+//!    shear `Sx = d[kx]/d[kz]`, `Sy = d[ky]/d[kz]`, `Sz = 1/d[kz]` maps `d` to `(0, 0, 1)`.
+//!    Choosing `kz` as the dominant axis keeps `|Sx|, |Sy| <= 1`. This is [`WatertightRay`],
+//!    computed once per ray.
+//! 2. **Per triangle: translate, permute, shear** each vertex `P` into
+//!    `P' = (Px - Sx Pz, Py - Sy Pz, Sz Pz)` with `P = vertex - o` in permuted axes. The
+//!    ray is now the positive z axis; whether it hits is a 2D point-in-triangle test of the
+//!    origin against `(A'x, A'y), (B'x, B'y), (C'x, C'y)`.
+//! 3. **Edge functions** `U = C'x B'y - C'y B'x`, `V = A'x C'y - A'y C'x`,
+//!    `W = B'x A'y - B'y A'x`: twice the signed areas of the sub-triangles the origin makes
+//!    with the edges `BC`, `CA`, `AB`, i.e. the unnormalised barycentrics of `a`, `b`, `c`.
+//! 4. **Exact fallback**: if any of `U, V, W` is exactly 0 the origin may lie on an edge,
+//!    and rounding decides on which side; recompute all three with an exact sign (`f32`: in
+//!    `f64`, as in the paper; `f64`: Kahan's difference of products, see below).
+//! 5. **Inside test, both faces**: miss if some edge function is negative and some positive.
+//!    Zero counts as inside (closed triangle).
+//! 6. `det = U + V + W`; `det == 0` means the projected triangle has no area (ray parallel
+//!    to the plane, or a degenerate triangle): miss.
+//! 7. **Distance without division**: `T = U A'z + V B'z + W C'z` is `t * det`. With
+//!    `s = sign(det)`, a hit needs `0 < T s <= t_max |det|`; `T s` and `|det|` are the paper's
+//!    `xorf(T, sign_mask(det))` and `xorf(det, sign_mask(det))`.
+//! 8. Only then divide: `t = T / det`, and the barycentrics `u = V / det` (weight of `b`),
+//!    `v = W / det` (weight of `c`).
+//!
+//! # Why it is watertight
+//!
+//! A vertex's transformed coordinates depend only on that vertex and the ray, so two
+//! triangles that share a vertex see the same `(P'x, P'y)`. An edge function is
+//! `a*b - c*d` of those coordinates; for a shared edge the neighbour (wound consistently)
+//! evaluates the same edge in the opposite direction, `c*d - a*b`, and IEEE rounding of
+//! products and differences is symmetric, so it gets exactly the negated value. A nonzero
+//! computed value has the exact sign (rounding is monotonic: `ab > cd` implies
+//! `fl(ab) >= fl(cd)`), and a zero is recomputed with an exact sign. So both triangles agree
+//! on which side of their common edge the ray passes, and the union of a fan of triangles
+//! leaves no point out: no cracks. A ray exactly on the edge (value 0) is inside both:
+//! counted twice, never zero times. This needs consistent vertex values (the same
+//! floating-point numbers in both triangles), which indexed meshes give for free.
+//!
+//! # Implementation notes
+//!
+//! - [`WatertightPrim`] stores the three vertices **transposed**: one vector of the three
+//!   `x`, one of the three `y`, one of the three `z`. Step 2 then handles all three vertices
+//!   of the triangle at once: `X = (A'x, B'x, C'x)` is one subtract-multiply-subtract on
+//!   whole vectors, with rows picked by the per-ray permutation. Each lane computes exactly
+//!   the paper's scalar expression, so nothing in the argument above changes.
+//! - Step 3 is `rotate(X) * Y - rotate(Y) * X`, which gives `(W, U, V)` in lanes 0, 1, 2.
+//!   Multiply and subtract are separate operations on purpose: a fused multiply-add would
+//!   round `a*b - c*d` and `c*d - a*b` differently and break the exact negation.
+//! - The sign-aware distance test of step 7 is loosened by a few ulps, and the decision is
+//!   made on the divided `t` (`0 < t <= t_max`, finite). Without the slack the undivided test
+//!   could reject a hit whose rounded `t` equals `t_max`, so `intersect(.., t_max = hit.t)`
+//!   would miss its own hit and ties between triangles would depend on traversal order.
+//! - NaN anywhere fails every comparison that accepts, so it is a miss; no branch can panic
+//!   (the axis indices are always in `0..3`).
+
+use core::marker::PhantomData;
+
+use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
+
+use crate::{GlamReal, is_degenerate};
+
+/// The watertight kernel of Woop, Benthin and Wald (2013): no cracks along shared edges.
+///
+/// The default back end (`NAME = "la"`). See the [module derivation](crate::watertight) and the
+/// [crate table](crate#what-each-kernel-guarantees).
+///
+/// ```
+/// use intersect::{Intersector, Ray, Triangle};
+/// use la_tracer::Watertight;
+///
+/// let wt = Watertight::<f64>::new();
+/// let prim = wt.prepare(&Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]));
+/// // Aimed exactly at the edge from b to c: edges are part of the triangle.
+/// let ray = Ray::new([1.0, 1.0, 3.0], [0.0, 0.0, -1.0]);
+/// let hit = wt.intersect(&prim, &ray, &wt.prepare_ray(&ray), f64::INFINITY).unwrap();
+/// assert_eq!((hit.t, hit.u, hit.v), (3.0, 0.5, 0.5));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Watertight<T>(PhantomData<T>);
+
+impl<T> Watertight<T> {
+    /// The kernel (it has no state).
+    #[must_use]
+    pub const fn new() -> Self {
+        Self(PhantomData)
+    }
+}
+
+/// What [`Watertight`] keeps of a triangle: its three vertices, transposed (`xs` holds
+/// `(a.x, b.x, c.x)`, and so on), so one vector operation transforms all three.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WatertightPrim<T: GlamReal> {
+    /// `[xs, ys, zs]`, indexed by axis.
+    axes: [T::V; 3],
+}
+
+/// What [`Watertight`] computes once per ray (paper, Fig. 5): the axis permutation, the
+/// origin in permuted axes, and the shear that maps the direction to `(0, 0, 1)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WatertightRay<T> {
+    /// `[kx, ky, kz]`: `kz` is the dominant axis of the direction.
+    k: [u8; 3],
+    /// `(o[kx], o[ky], o[kz])`.
+    origin: [T; 3],
+    /// `(Sx, Sy, Sz) = (d[kx], d[ky], 1) / d[kz]`.
+    shear: [T; 3],
+}
+
+impl<T: GlamReal> Intersector for Watertight<T> {
+    type Real = T;
+    type Prim = WatertightPrim<T>;
+    type RayData = WatertightRay<T>;
+    const NAME: &'static str = "la";
+
+    fn prepare(&self, tri: &Triangle<T>) -> WatertightPrim<T> {
+        // A degenerate triangle becomes three copies of `a`: every edge function is then
+        // `x*y - y*x`, exactly 0, so `det == 0` and it is never hit. Without this, rounding in
+        // the shear can give an exactly collinear triangle a sliver of area.
+        let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };
+        WatertightPrim { axes: core::array::from_fn(|k| T::load([a[k], b[k], c[k]])) }
+    }
+
+    #[inline]
+    fn prepare_ray(&self, ray: &Ray<T>) -> WatertightRay<T> {
+        let d = ray.dir;
+        let [ax, ay, az] = d.map(Real::abs);
+        // Ties go to the later axis; NaN picks some axis and poisons the shear below.
+        let kz = if ax > ay {
+            if ax > az { 0 } else { 2 }
+        } else if ay > az {
+            1
+        } else {
+            2
+        };
+        let (mut kx, mut ky) = ((kz + 1) % 3, (kz + 2) % 3);
+        // Looking down -z mirrors the xy plane; swapping x and y mirrors it back, so a
+        // counter-clockwise triangle stays counter-clockwise (the signs of U, V, W stay
+        // meaningful).
+        if d[kz] < T::ZERO {
+            core::mem::swap(&mut kx, &mut ky);
+        }
+        let sz = T::ONE / d[kz];
+        WatertightRay {
+            k: [kx as u8, ky as u8, kz as u8],
+            origin: [ray.origin[kx], ray.origin[ky], ray.origin[kz]],
+            shear: [d[kx] * sz, d[ky] * sz, sz],
+        }
+    }
+
+    #[inline]
+    fn intersect(
+        &self,
+        prim: &WatertightPrim<T>,
+        _ray: &Ray<T>,
+        rd: &WatertightRay<T>,
+        t_max: T,
+    ) -> Option<TriangleHit<T>> {
+        let [kx, ky, kz] = rd.k.map(usize::from);
+        let [sx, sy, sz] = rd.shear;
+
+        // Step 2: all three vertices relative to the origin, permuted and sheared.
+        // Lane i of each vector belongs to vertex i (a, b, c).
+        let z = prim.axes[kz] - T::splat(rd.origin[2]);
+        let x = (prim.axes[kx] - T::splat(rd.origin[0])) - z * sx;
+        let y = (prim.axes[ky] - T::splat(rd.origin[1])) - z * sy;
+
+        // Step 3: lanes (W, U, V); lane i is the edge from vertex i to vertex i + 1, i.e.
+        // `next.x * this.y - next.y * this.x`.
+        let mut wuv = T::rotate(x) * y - T::rotate(y) * x;
+
+        // Step 4: an exact zero may be a rounded nonzero; redo all three with an exact sign.
+        if T::any_zero(wuv) {
+            wuv = T::edge_functions_exact_sign(x, y);
+        }
+
+        // Step 5: both-sided inside test; zero is inside.
+        if T::any_negative(wuv) && T::any_positive(wuv) {
+            return None;
+        }
+
+        // Step 6.
+        let det = T::sum(wuv);
+        if det == T::ZERO {
+            return None;
+        }
+
+        // Step 7: T = U A'z + V B'z + W C'z, i.e. (W, U, V) . (C'z, A'z, B'z).
+        let t_scaled = T::dot(wuv, T::rotate_back(z * sz));
+        let (t_signed, det_abs) = if det < T::ZERO { (-t_scaled, -det) } else { (t_scaled, det) };
+        // Loosened by 4 ulps of 1 so that it never rejects what the exact test below accepts
+        // (if |T| / |det| rounds to at most t_max, then |T| <= t_max |det| (1 + half an ulp),
+        // and the product t_max |det| itself is rounded).
+        let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
+        if !(t_signed > T::ZERO && t_signed <= t_max * det_abs * slack) {
+            return None;
+        }
+
+        // Step 8: one reciprocal, only for a (probable) hit.
+        let inv_det = T::ONE / det;
+        let t = t_scaled * inv_det;
+        let [weight_c, _, weight_b] = T::lanes(wuv);
+        (t > T::ZERO && t <= t_max && t.is_finite()).then(|| TriangleHit {
+            t,
+            u: weight_b * inv_det,
+            v: weight_c * inv_det,
+        })
+    }
+}
