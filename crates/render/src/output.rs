@@ -90,37 +90,47 @@ pub enum OutputError {
         path: PathBuf,
     },
     /// The temporary file could not be created: the directory is missing or not writable.
-    #[error("{}: cannot write to this location: {source}", path.display())]
+    #[error("{}: cannot write to this location: {}", path.display(), reason(error))]
     Create {
         /// The destination path.
         path: PathBuf,
-        /// The operating system's reason.
-        source: io::Error,
+        /// The operating system's reason (in the message, so not also a `source()`).
+        error: io::Error,
     },
     /// Writing or renaming failed.
-    #[error("{}: write failed: {source}", path.display())]
+    #[error("{}: write failed: {}", path.display(), reason(error))]
     Write {
         /// The destination path.
         path: PathBuf,
-        /// The operating system's reason.
-        source: io::Error,
+        /// The operating system's reason (in the message, so not also a `source()`).
+        error: io::Error,
     },
     /// The image encoder failed.
-    #[error("{}: cannot encode the image: {source}", path.display())]
+    #[error("{}: cannot encode the image: {error}", path.display())]
     Encode {
         /// The destination path.
         path: PathBuf,
         /// The encoder's reason.
-        source: image::ImageError,
+        error: image::ImageError,
     },
     /// The image to encode could not be made.
-    #[error("{}: {source}", path.display())]
+    #[error("{}: {error}", path.display())]
     Frame {
         /// The destination path.
         path: PathBuf,
         /// Why.
-        source: FrameError,
+        error: FrameError,
     },
+}
+
+/// The operating system's reason for an I/O error. `tempfile` appends ` at path "TEMP"`,
+/// naming its temporary file, which would only confuse the user: cut it.
+fn reason(e: &io::Error) -> String {
+    let text = e.to_string();
+    match text.rfind(" at path ") {
+        Some(i) => text[..i].to_owned(),
+        None => text,
+    }
 }
 
 /// A file that appears at its path only when [`AtomicFile::commit`] succeeds (see the
@@ -152,7 +162,7 @@ impl AtomicFile {
         builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
         let temp = builder
             .tempfile_in(dir)
-            .map_err(|source| OutputError::Create { path: path.to_path_buf(), source })?;
+            .map_err(|error| OutputError::Create { path: path.to_path_buf(), error })?;
         Ok(Self { path: path.to_path_buf(), temp })
     }
 
@@ -174,7 +184,7 @@ impl AtomicFile {
         write: impl FnOnce(&mut BufWriter<&File>) -> io::Result<()>,
     ) -> Result<(), OutputError> {
         let path = self.path;
-        let fail = |source| OutputError::Write { path: path.clone(), source };
+        let fail = |error| OutputError::Write { path: path.clone(), error };
         let mut w = BufWriter::new(self.temp.as_file());
         write(&mut w).map_err(fail)?;
         w.flush().map_err(fail)?;
@@ -241,8 +251,8 @@ impl ImageOutput {
     /// [`OutputError`]: the image cannot be allocated, encoded or written.
     pub fn write(self, frame: &Frame) -> Result<(), OutputError> {
         let path = self.file.path().to_path_buf();
-        let frame_error = |source| OutputError::Frame { path: path.clone(), source };
-        let encode = |path, source| OutputError::Encode { path, source };
+        let frame_error = |error| OutputError::Frame { path: path.clone(), error };
+        let encode = |path, error| OutputError::Encode { path, error };
         match self.format {
             Format::Png => {
                 let img = frame.to_display().map_err(frame_error)?;
@@ -327,6 +337,7 @@ mod tests {
         let e = ImageOutput::create(Path::new("/nonexistent/dir/x.png")).unwrap_err();
         assert!(matches!(e, OutputError::Create { .. }));
         assert!(e.to_string().starts_with("/nonexistent/dir/x.png: cannot write"), "{e}");
+        assert!(!e.to_string().contains(".tmp"), "names the temporary file: {e}");
     }
 
     #[test]

@@ -1,0 +1,460 @@
+//! End-to-end tests of the `raytrace` and `raycast` programs: real processes, temporary
+//! directories, answers known analytically.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use render::output::npy;
+
+/// A square `[-1, 1]^2` at `z = 4`: triangle 0 is its upper-left half (`y > x`), triangle 1
+/// the lower-right half, both wound towards -z.
+const SQUARE: &str = "v -1 -1 4\nv 1 -1 4\nv 1 1 4\nv -1 1 4\nf 1 4 3\nf 1 3 2\n";
+
+/// One triangle in the upper-right quadrant of the origin camera's view, at `z = 4`.
+const UPPER_RIGHT: &str = "v 0.2 0.2 4\nv 1.2 0.2 4\nv 0.2 1.2 4\nf 1 2 3\n";
+
+fn raytrace(args: &[&dyn AsRef<std::ffi::OsStr>]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raytrace")).args(args).output().unwrap()
+}
+
+fn raycast(args: &[&dyn AsRef<std::ffi::OsStr>]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raycast")).args(args).output().unwrap()
+}
+
+fn ok(out: &Output) -> String {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "failed: {stderr}");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The program failed with exactly one line on stderr, `error: ...` containing `needle`.
+fn fails(out: &Output, needle: &str) {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "succeeded, expected an error with '{needle}'");
+    assert_eq!(stderr.lines().count(), 1, "not one line: {stderr}");
+    assert!(stderr.starts_with("error: "), "{stderr}");
+    assert!(stderr.contains(needle), "'{needle}' not in: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    v.sort();
+    v
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// The camera contract for the origin camera, written out independently of `render`:
+/// where pixel (i, j)'s ray meets the plane z = `depth`, and its unit direction's z.
+fn origin_ray(i: u32, j: u32, w: u32, h: u32, depth: f64) -> ([f64; 2], f64) {
+    let t = 22.5f64.to_radians().tan();
+    let x = (2.0 * (f64::from(i) + 0.5) / f64::from(w) - 1.0) * t * f64::from(w) / f64::from(h);
+    let y = (1.0 - 2.0 * (f64::from(j) + 0.5) / f64::from(h)) * t;
+    ([depth * x, depth * y], 1.0 / (1.0 + x * x + y * y).sqrt())
+}
+
+/// `Some(inside)` for the square at z = 4, `None` for pixels too near an edge to call.
+fn square_mask(i: u32, j: u32, w: u32, h: u32) -> Option<bool> {
+    let ([x, y], _) = origin_ray(i, j, w, h, 4.0);
+    let margin = x.abs().max(y.abs()) - 1.0;
+    (margin.abs() > 1e-4).then_some(margin < 0.0)
+}
+
+#[test]
+fn alpha_png_matches_the_analytic_square_on_every_backend_and_precision() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let (w, h) = (48u32, 32u32);
+    for (backend, precision) in [("la", "f32"), ("la", "f64"), ("la-mt", "f32"), ("la-mt", "f64")] {
+        let png = dir.path().join(format!("{backend}-{precision}.png"));
+        let out = raytrace(&[
+            &obj,
+            &png,
+            &"48",
+            &"32",
+            &"--camera",
+            &"origin",
+            &"--backend",
+            &backend,
+            &"--precision",
+            &precision,
+            &"--quiet",
+        ]);
+        assert_eq!(ok(&out), "", "--quiet prints nothing");
+        let img = image::open(&png).unwrap().into_luma8();
+        assert_eq!(img.dimensions(), (w, h));
+        let mut hits = 0;
+        for j in 0..h {
+            for i in 0..w {
+                let px = img.get_pixel(i, j).0[0];
+                assert!(px == 0 || px == 255);
+                if let Some(inside) = square_mask(i, j, w, h) {
+                    assert_eq!(px == 255, inside, "{backend} {precision} pixel ({i}, {j})");
+                }
+                hits += u32::from(px == 255);
+            }
+        }
+        assert!(hits > 100, "{hits}");
+    }
+}
+
+#[test]
+fn image_is_not_mirrored() {
+    // +x is right and +y is up for the origin camera (documented handedness): a triangle in
+    // the upper-right quadrant of the view lands in the upper-right quarter of the image.
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "ur.obj", UPPER_RIGHT);
+    let png = dir.path().join("ur.png");
+    ok(&raytrace(&[&obj, &png, &"40", &"40", &"--camera", &"origin", &"-q"]));
+    let img = image::open(&png).unwrap().into_luma8();
+    let mut hits = 0;
+    for (i, j, p) in img.enumerate_pixels() {
+        if p.0[0] == 255 {
+            assert!(i >= 20 && j < 20, "hit at ({i}, {j})");
+            hits += 1;
+        }
+    }
+    assert!(hits > 10);
+}
+
+#[test]
+fn every_mode_writes_every_format() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let (w, h) = (20u32, 14u32);
+    for mode in ["alpha", "depth", "normal", "shade", "prim"] {
+        for ext in ["png", "jpg", "jpeg", "exr", "npy"] {
+            let path = dir.path().join(format!("{mode}.{ext}"));
+            let out =
+                raytrace(&[&obj, &path, &"20", &"14", &"--camera", &"origin", &"--mode", &mode]);
+            let summary = ok(&out);
+            assert!(summary.contains("2 triangles") && summary.contains("Mrays/s"), "{summary}");
+            assert_eq!(summary.lines().count(), 1);
+            if ext == "npy" {
+                check_npy(&path, mode, w, h);
+            } else {
+                let img = image::open(&path).unwrap();
+                assert_eq!((img.width(), img.height()), (w, h), "{mode}.{ext}");
+                if ext == "exr" {
+                    // A = hit: the centre pixel hits the square, the corner misses.
+                    let f = img.into_rgba32f();
+                    assert_eq!(f.get_pixel(w / 2, h / 2).0[3], 1.0, "{mode}");
+                    assert_eq!(f.get_pixel(0, 0).0[3], 0.0, "{mode}");
+                }
+            }
+        }
+    }
+    let leftovers: Vec<String> =
+        names(dir.path()).into_iter().filter(|n| n.starts_with('.')).collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+}
+
+fn check_npy(path: &Path, mode: &str, w: u32, h: u32) {
+    let bytes = std::fs::read(path).unwrap();
+    let header = String::from_utf8_lossy(&bytes[..128]).into_owned();
+    let (descr, shape) = match mode {
+        "alpha" => ("|u1", format!("({h}, {w})")),
+        "depth" => ("<f4", format!("({h}, {w})")),
+        "prim" => ("<u4", format!("({h}, {w})")),
+        _ => ("<f4", format!("({h}, {w}, 3)")),
+    };
+    assert!(header.contains(&format!("'descr': '{descr}'")), "{mode}: {header}");
+    assert!(header.contains(&format!("'shape': {shape}")), "{mode}: {header}");
+    if mode == "depth" {
+        // The hit distance along the unit ray is 4 / dir_z; a miss is +inf.
+        let m = npy::read_f64_matrix(&bytes, w as usize).unwrap();
+        for j in 0..h {
+            for i in 0..w {
+                let t = m.values[(j * w + i) as usize];
+                match square_mask(i, j, w, h) {
+                    Some(true) => {
+                        let expect = 4.0 / origin_ray(i, j, w, h, 4.0).1;
+                        assert!((t - expect).abs() < 1e-5 * expect, "({i}, {j}) {t} vs {expect}");
+                    }
+                    Some(false) => assert_eq!(t, f64::INFINITY),
+                    None => {}
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn auto_camera_frames_the_whole_mesh_and_eye_overrides() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let png = dir.path().join("auto.png");
+    ok(&raytrace(&[&obj, &png, &"30", &"20", &"-q"]));
+    let img = image::open(&png).unwrap().into_luma8();
+    let (w, h) = img.dimensions();
+    let border =
+        img.enumerate_pixels().filter(|(i, j, _)| *i == 0 || *j == 0 || *i == w - 1 || *j == h - 1);
+    assert!(border.into_iter().all(|(_, _, p)| p.0[0] == 0), "the mesh touches the border");
+    assert!(img.pixels().filter(|p| p.0[0] == 255).count() > 50);
+
+    // From (0, 0, -4) towards the square's centre: distance 8, the square looks half as big
+    // as from the origin, and its hit test is the origin's at depth 8.
+    let npy_path = dir.path().join("far.npy");
+    ok(&raytrace(&[
+        &obj,
+        &npy_path,
+        &"24",
+        &"24",
+        &"--eye",
+        &"0,0,-4",
+        &"--look-at",
+        &"0,0,4",
+        &"--mode",
+        &"depth",
+        &"--precision",
+        &"f64",
+        &"-q",
+    ]));
+    let m = npy::read_f64_matrix(&std::fs::read(&npy_path).unwrap(), 24).unwrap();
+    for j in 0..24 {
+        for i in 0..24 {
+            let ([x, y], dz) = origin_ray(i, j, 24, 24, 8.0);
+            let t = m.values[(j * 24 + i) as usize];
+            if x.abs().max(y.abs()) < 0.999 {
+                // Depth frames hold f32.
+                assert!((t - 8.0 / dz).abs() < 1e-5 * t, "({i}, {j}) {t}");
+            } else if x.abs().max(y.abs()) > 1.001 {
+                assert_eq!(t, f64::INFINITY);
+            }
+        }
+    }
+}
+
+#[test]
+fn stats_json_has_exactly_the_documented_keys() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let stats = dir.path().join("stats.json");
+    ok(&raytrace(&[
+        &obj,
+        &dir.path().join("a.png"),
+        &"10",
+        &"8",
+        &"--stats",
+        &stats,
+        &"--threads",
+        &"2",
+        &"--backend",
+        &"la-mt",
+        &"--precision",
+        &"f64",
+        &"-q",
+    ]));
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+    let obj = v.as_object().unwrap();
+    let mut keys: Vec<&str> = obj.keys().map(String::as_str).collect();
+    keys.sort_unstable();
+    let expected = [
+        "backend",
+        "build_ms",
+        "load_ms",
+        "mrays_per_s",
+        "precision",
+        "rays",
+        "threads",
+        "trace_ms",
+        "triangles",
+    ];
+    assert_eq!(keys, expected);
+    assert_eq!(v["triangles"], 2);
+    assert_eq!(v["rays"], 80);
+    assert_eq!(v["threads"], 2);
+    assert_eq!(v["backend"], "la-mt");
+    assert_eq!(v["precision"], "f64");
+    for k in ["load_ms", "build_ms", "trace_ms", "mrays_per_s"] {
+        assert!(v[k].as_f64().unwrap() >= 0.0, "{k}");
+    }
+}
+
+/// Rays from `(x, y, 0)` along `(0, 0, 2)` at the square: `t = 2` in units of the direction.
+fn square_rays() -> Vec<[f64; 6]> {
+    vec![
+        [-0.5, 0.5, 0.0, 0.0, 0.0, 2.0],  // upper left: triangle 0
+        [0.5, -0.25, 0.0, 0.0, 0.0, 2.0], // lower right: triangle 1
+        [3.0, 0.0, 0.0, 0.0, 0.0, 2.0],   // beside the square
+        [0.0, 0.0, 0.0, 0.0, 0.0, -1.0],  // away from it
+        [f64::NAN, 0.0, 0.0, 0.0, 0.0, 1.0],
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0], // no direction
+    ]
+}
+
+/// Barycentrics `(u, v)` of point `(x, y)` in triangle (a, b, c) of the square.
+fn barycentrics(tri: usize, x: f64, y: f64) -> (f64, f64) {
+    // Triangle 0: a = (-1,-1), b = (-1,1), c = (1,1); triangle 1: a = (-1,-1), b = (1,1), c = (1,-1).
+    // p - a = u (b - a) + v (c - a), solved by hand for each.
+    let (px, py) = (x + 1.0, y + 1.0);
+    if tri == 0 { ((py - px) / 2.0, px / 2.0) } else { (py / 2.0, (px - py) / 2.0) }
+}
+
+#[test]
+fn raycast_round_trip_f32_and_f64() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let rays = square_rays();
+    for dtype in ["f32", "f64"] {
+        let rays_path = dir.path().join(format!("rays-{dtype}.npy"));
+        let mut bytes = Vec::new();
+        let flat = rays.iter().flatten().copied();
+        if dtype == "f32" {
+            npy::write(&mut bytes, &[rays.len(), 6], flat.map(|x| x as f32)).unwrap();
+        } else {
+            npy::write(&mut bytes, &[rays.len(), 6], flat).unwrap();
+        }
+        std::fs::write(&rays_path, bytes).unwrap();
+        for precision in ["f32", "f64"] {
+            let hits_path = dir.path().join(format!("hits-{dtype}-{precision}.npy"));
+            let stats = dir.path().join("cast.json");
+            let out = raycast(&[
+                &obj,
+                &rays_path,
+                &hits_path,
+                &"--precision",
+                &precision,
+                &"--stats",
+                &stats,
+            ]);
+            assert!(ok(&out).contains("6 rays"));
+            let hits = npy::read_f64_matrix(&std::fs::read(&hits_path).unwrap(), 4).unwrap();
+            assert!(!hits.was_f32);
+            assert_eq!(hits.rows, rays.len());
+            let row = |r: usize| &hits.values[4 * r..4 * r + 4];
+            for (r, tri) in [(0usize, 0usize), (1, 1)] {
+                let (u, v) = barycentrics(tri, rays[r][0], rays[r][1]);
+                let got = row(r);
+                assert!((got[0] - 2.0).abs() < 1e-6, "{dtype} {precision} t = {}", got[0]);
+                assert_eq!(got[1], tri as f64);
+                assert!(
+                    (got[2] - u).abs() < 1e-6 && (got[3] - v).abs() < 1e-6,
+                    "{got:?} vs {u},{v}"
+                );
+            }
+            for r in 2..rays.len() {
+                let got = row(r);
+                assert_eq!((got[0], got[1]), (f64::INFINITY, -1.0), "ray {r}");
+                assert!(got[2].is_nan() && got[3].is_nan());
+            }
+            let v: serde_json::Value =
+                serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+            assert_eq!(v["rays"], 6);
+        }
+        let any_path = dir.path().join("any.npy");
+        ok(&raycast(&[&obj, &rays_path, &any_path, &"--any-hit", &"-q"]));
+        let any = npy::read_f64_matrix(&std::fs::read(&any_path).unwrap(), 1).unwrap();
+        assert_eq!(any.values, vec![1.0, 1.0, 0.0, 0.0, 0.0, 0.0]);
+    }
+}
+
+#[test]
+fn bad_render_inputs_fail_with_one_line_and_leave_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let good = write(d, "square.obj", SQUARE);
+    let malformed = write(d, "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n");
+    let empty = write(d, "empty.obj", "v 0 0 0\nv 1 0 0\n");
+    let nan = write(d, "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+    let inputs = names(d);
+    let out = d.join("out.png");
+    let (gif, bare) = (d.join("out.gif"), d.join("out"));
+    let cases: Vec<(Vec<&dyn AsRef<std::ffi::OsStr>>, &str)> = vec![
+        (vec![&"/nonexistent/missing.obj", &out, &"8", &"8"], "missing.obj"),
+        (vec![&malformed, &out, &"8", &"8"], "bad.obj:4"),
+        (vec![&empty, &out, &"8", &"8"], "no faces"),
+        (vec![&nan, &out, &"8", &"8"], "nan.obj:2"),
+        (vec![&good, &out, &"0", &"8"], "at least 1"),
+        (vec![&good, &out, &"8", &"0"], "at least 1"),
+        (vec![&good, &out, &"100000", &"100000"], "too large"),
+        (vec![&good, &gif, &"8", &"8"], "unknown output format"),
+        (vec![&good, &bare, &"8", &"8"], "unknown output format"),
+        (vec![&good, &"/nonexistent/dir/x.png", &"8", &"8"], "/nonexistent/dir/x.png"),
+        (vec![&good, &out, &"8", &"8", &"--stats", &"/nonexistent/s.json"], "s.json"),
+        (vec![&good, &out, &"8", &"8", &"--eye", &"0,0,4", &"--look-at", &"0,0,4"], "coincide"),
+        (vec![&good, &out, &"8", &"8", &"--fov", &"200"], "field of view"),
+        (vec![&good, &out, &"8", &"8", &"--eye", &"1,2"], "X,Y,Z"),
+        (vec![&good, &out, &"8", &"wide"], "HEIGHT"),
+        (vec![&good, &out, &"8", &"8", &"--mode", &"colour"], "colour"),
+    ];
+    for (args, needle) in cases {
+        fails(&raytrace(&args), needle);
+        assert_eq!(names(d), inputs, "a file was left behind ({needle})");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn read_only_directory_is_refused_before_rendering() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let ro = dir.path().join("ro");
+    std::fs::create_dir(&ro).unwrap();
+    std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o555)).unwrap();
+    // Root (as in some containers) may write anyway: then there is nothing to test.
+    if std::fs::write(ro.join("probe"), b"").is_ok() {
+        std::fs::remove_file(ro.join("probe")).unwrap();
+        return;
+    }
+    fails(&raytrace(&[&obj, &ro.join("x.png"), &"8", &"8"]), "cannot write");
+    assert!(names(&ro).is_empty());
+    std::fs::set_permissions(&ro, std::fs::Permissions::from_mode(0o755)).unwrap();
+}
+
+#[test]
+fn bad_raycast_inputs_fail_with_one_line_and_leave_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let obj = write(d, "square.obj", SQUARE);
+    let npy_file = |name: &str, descr: &str, fortran: &str, shape: &str, data: &[u8]| {
+        let mut header =
+            format!("{{'descr': '{descr}', 'fortran_order': {fortran}, 'shape': {shape}, }}");
+        while (10 + header.len() + 1) % 64 != 0 {
+            header.push(' ');
+        }
+        header.push('\n');
+        let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
+        bytes.extend_from_slice(&(header.len() as u16).to_le_bytes());
+        bytes.extend_from_slice(header.as_bytes());
+        bytes.extend_from_slice(data);
+        let p = d.join(name);
+        std::fs::write(&p, bytes).unwrap();
+        p
+    };
+    let ints = npy_file("ints.npy", "<i4", "False", "(1, 6)", &[0; 24]);
+    let shape = npy_file("shape.npy", "<f4", "False", "(2, 5)", &[0; 40]);
+    let short = npy_file("short.npy", "<f8", "False", "(2, 6)", &[0; 95]);
+    let big_endian = npy_file("be.npy", ">f4", "False", "(1, 6)", &[0; 24]);
+    let fortran = npy_file("fortran.npy", "<f4", "True", "(1, 6)", &[0; 24]);
+    let text_file = write(d, "rays.txt", "0 0 0 0 0 1\n");
+    let good = npy_file("good.npy", "<f4", "False", "(1, 6)", &[0; 24]);
+    let inputs = names(d);
+    let hits = d.join("hits.npy");
+    let (none, no_obj, csv) = (d.join("none.npy"), d.join("no.obj"), d.join("hits.csv"));
+    let cases: Vec<(Vec<&dyn AsRef<std::ffi::OsStr>>, &str)> = vec![
+        (vec![&obj, &none, &hits], "none.npy: cannot read"),
+        (vec![&obj, &ints, &hits], "'<i4'"),
+        (vec![&obj, &big_endian, &hits], "'>f4'"),
+        (vec![&obj, &shape, &hits], "(2, 5)"),
+        (vec![&obj, &short, &hits], "95 bytes"),
+        (vec![&obj, &fortran, &hits], "Fortran"),
+        (vec![&obj, &text_file, &hits], "not a NumPy"),
+        (vec![&no_obj, &good, &hits], "no.obj"),
+        (vec![&obj, &good, &csv], ".npy extension"),
+        (vec![&obj, &good, &"/nonexistent/hits.npy"], "/nonexistent/hits.npy"),
+    ];
+    for (args, needle) in cases {
+        fails(&raycast(&args), needle);
+        assert_eq!(names(d), inputs, "a file was left behind ({needle})");
+    }
+}
