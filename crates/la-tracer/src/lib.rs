@@ -31,7 +31,7 @@
 //! | | [`Watertight`] (`"la"`, default) | [`MollerTrumbore`] (`"la-mt"`) |
 //! |---|---|---|
 //! | Source, derivation | Woop, Benthin, Wald, JCGT 2013; [`watertight`] | Moller, Trumbore, JGT 1997; [`moller_trumbore`] |
-//! | Shared edges and vertices | **no cracks**: a ray through a shared edge or vertex hits at least one of the triangles (both, if exactly on the edge), given that neighbours use the same vertex values | not watertight: in `f32` rays through shared edges can miss both triangles, or hit both; rarer in `f64`, not excluded |
+//! | Shared edges and vertices | **no cracks**: a ray through a shared edge or vertex hits at least one of the triangles there (more than one when an edge function is exactly 0), given that neighbours use the same vertex values | not watertight: in `f32` rays through shared edges can miss both triangles, or hit both; rarer in `f64`, not excluded |
 //! | Edges | closed (edge functions `== 0` are inside) | closed (`u, v >= 0`, `u + v <= 1` as rounded) |
 //! | Scale | no epsilon: only `det == 0` is rejected | no epsilon: only `det == 0` (or non-finite) is rejected |
 //! | Faces | both | both |
@@ -43,17 +43,24 @@
 //! | Division | only when the edge and distance tests pass | one reciprocal per non-parallel test |
 //! | Rare slow path | exact-sign recomputation when an edge function is exactly 0 (`f64` arithmetic for `f32`, fused multiply-adds for `f64`) | none |
 //!
+//! Measured by `tests/watertight.rs` (random height fields with `f32` vertices; 12,676 rays
+//! aimed exactly at points of shared edges and at shared vertices, per placement): the
+//! watertight kernel lets no ray through, in `f32` and `f64`, near the origin and 16,384
+//! units (1,024 mesh extents) away. Moller-Trumbore in `f32` lets 1,119 through near the
+//! origin (8.8%) and 7 far away (where the vertices are quantised to `2^-9` and its
+//! arithmetic becomes nearly exact); in `f64`, 1 and 0.
+//!
 //! Speeds are measured by the criterion benches in `benches/`, not here.
 //!
 //! # Accuracy
 //!
-//! Both kernels report `t` within a few ulps of the exact intersection of the ray with the
-//! triangle's plane for well-conditioned rays (the tests check relative errors of `1e-5` in
-//! `f32` and `1e-12` in `f64` against an independent `f64` solver); the error grows as the
-//! ray grazes the plane. Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`.
-//! Barycentrics satisfy `u, v >= 0` exactly for Moller-Trumbore and up to rounding of one
-//! division for the watertight kernel, whose inside test is made on the undivided edge
-//! functions.
+//! Against an independent `f64` solver on random rays and triangles, the worst relative error
+//! of `t` (times the cosine of incidence, since a grazing ray magnifies every rounding error)
+//! is about `5e-6` in `f32` and `2e-14` in `f64`, for both kernels; the tests assert `1e-5`
+//! and `1e-12`. Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`,
+//! with `u >= 0` and `v >= 0` exactly. `u + v <= 1` holds exactly for Moller-Trumbore (it is
+//! its test) and up to the rounding of one multiplication for the watertight kernel, whose
+//! inside test is made on the undivided edge functions.
 
 #![deny(missing_docs)]
 

@@ -147,11 +147,12 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         if d[kz] < T::ZERO {
             core::mem::swap(&mut kx, &mut ky);
         }
-        let sz = T::ONE / d[kz];
+        // Divisions, as in the paper, rather than multiplications by 1/d[kz]: one rounding
+        // each. Once per ray, so the cost does not matter.
         WatertightRay {
             k: [kx as u8, ky as u8, kz as u8],
             origin: [ray.origin[kx], ray.origin[ky], ray.origin[kz]],
-            shear: [d[kx] * sz, d[ky] * sz, sz],
+            shear: [d[kx] / d[kz], d[ky] / d[kz], T::ONE / d[kz]],
         }
     }
 
