@@ -109,8 +109,8 @@ use intersect::{Intersector, Ray, Triangle, TriangleHit};
 
 use crate::dyadic::{Dyadic, det3, sub3};
 use crate::predicates::{
-    EDGE_REL, Filtered, GUARD, ORIENT_REL, det_filtered, dyadic_points,
-    edge_sign_perturbed_exact, is_degenerate, orient3d_exact, sub,
+    EDGE_REL, Filtered, GUARD, ORIENT_REL, det_filtered, dyadic_points, edge_sign_perturbed_exact,
+    is_degenerate, orient3d_exact, sub,
 };
 
 /// The sign of an exactly evaluated quantity.
@@ -211,7 +211,7 @@ impl Intersector for Exact {
 /// inputs). So a hit implies finite inputs.
 fn crossing(tri: &Triangle<f64>, ray: &Ray<f64>, t_max: f64) -> Option<Sign> {
     // Also rejects a NaN t_max: no t satisfies 0 < t <= t_max.
-    if !(t_max > 0.0) {
+    if t_max.is_nan() || t_max <= 0.0 {
         return None;
     }
     let (o, d) = (ray.origin, ray.dir);
@@ -299,4 +299,27 @@ fn exact_hit(tri: &Triangle<f64>, ray: &Ray<f64>) -> Option<TriangleHit<f64>> {
     let u = Dyadic::ratio_to_f64(&eca, &den)?;
     let v = Dyadic::ratio_to_f64(&eab, &den)?;
     Some(TriangleHit { t, u, v })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The edge tests alone already reject degenerate triangles (their sum, `n . d`, is zero);
+    /// `prepare` checks degeneracy as well, so test the sign logic without that check.
+    #[test]
+    fn the_sign_logic_alone_never_hits_a_degenerate_triangle() {
+        let segment = Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [2.0, 2.0, 0.0]);
+        let point = Triangle::new([0.5, 0.5, 0.0], [0.5, 0.5, 0.0], [0.5, 0.5, 0.0]);
+        for tri in [segment, point] {
+            for (origin, dir) in [
+                ([0.5, 0.5, 1.0], [0.0, 0.0, -1.0]),
+                ([0.0, 1.0, 1.0], [0.5, -0.5, -1.0]),
+                ([1.0, 1.0, 1.0], [0.0, 0.0, -1.0]),
+                ([-1.0, -1.0, 0.0], [1.0, 1.0, 0.0]),
+            ] {
+                assert_eq!(crossing(&tri, &Ray::new(origin, dir), f64::INFINITY), None);
+            }
+        }
+    }
 }

@@ -6,7 +6,7 @@
 //! every finite input (underflow included); if the value is farther from zero than the bound
 //! its sign is the exact sign (a semi-static filter, as in Shewchuk's adaptive predicates).
 //! Otherwise the polynomial is evaluated again, with no rounding at all, on dyadic rationals
-//! ([`crate::dyadic`]).
+//! (an internal module: big-integer mantissas and power-of-two exponents).
 //!
 //! # The error bounds
 //!
@@ -212,16 +212,13 @@ pub(crate) fn edge_sign_perturbed_exact(
 /// ```
 #[must_use]
 pub fn orient3d(o: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<Sign> {
-    det_filtered(sub(a, o), sub(b, o), sub(c, o), ORIENT_REL).sign().or_else(|| orient3d_exact(o, a, b, c))
+    det_filtered(sub(a, o), sub(b, o), sub(c, o), ORIENT_REL)
+        .sign()
+        .or_else(|| orient3d_exact(o, a, b, c))
 }
 
 /// The exact path of [`orient3d`].
-pub(crate) fn orient3d_exact(
-    o: [f64; 3],
-    a: [f64; 3],
-    b: [f64; 3],
-    c: [f64; 3],
-) -> Option<Sign> {
+pub(crate) fn orient3d_exact(o: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<Sign> {
     let [o, a, b, c] = dyadic_points([o, a, b, c])?;
     Some(det3(&sub3(&a, &o), &sub3(&b, &o), &sub3(&c, &o)).sign())
 }
@@ -243,6 +240,11 @@ pub(crate) fn orient3d_exact(
 /// ```
 #[must_use]
 pub fn is_degenerate(tri: &Triangle<f64>) -> bool {
+    // Checked first: the filter below could certify a normal component that does not involve
+    // the non-finite coordinate.
+    if !tri.vertices().as_flattened().iter().all(|x| x.is_finite()) {
+        return true;
+    }
     let (p, q) = (sub(tri.b, tri.a), sub(tri.c, tri.a));
     let certainly_nonzero = |i: usize, j: usize| {
         let (x, y) = (p[i] * q[j], p[j] * q[i]);
@@ -253,7 +255,7 @@ pub fn is_degenerate(tri: &Triangle<f64>) -> bool {
         return false;
     }
     let Some([a, b, c]) = dyadic_points([tri.a, tri.b, tri.c]) else {
-        return true;
+        return true; // unreachable: the coordinates are finite
     };
     cross3(&sub3(&b, &a), &sub3(&c, &a)).iter().all(Dyadic::is_zero)
 }

@@ -10,7 +10,6 @@ use intersect::Triangle;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
-
 fn exact_edge(o: [f64; 3], d: [f64; 3], p: [f64; 3], r: [f64; 3]) -> Sign {
     let o = q3(o);
     sign(&det(&sub(&q3(p), &o), &sub(&q3(r), &o), &q3(d)))
@@ -144,8 +143,9 @@ fn small_integers_match_i128() {
     };
     for range in [3, 1 << 20] {
         for _ in 0..5000 {
-            let v: [[i128; 3]; 4] =
-                core::array::from_fn(|_| core::array::from_fn(|_| rng.random_range(-range..=range)));
+            let v: [[i128; 3]; 4] = core::array::from_fn(|_| {
+                core::array::from_fn(|_| rng.random_range(-range..=range))
+            });
             let f = v.map(|p| p.map(|x| x as f64));
             let diff = |p: [i128; 3]| core::array::from_fn(|i| p[i] - v[0][i]);
             let e = det(diff(v[2]), diff(v[3]), v[1]);
@@ -161,10 +161,12 @@ fn orient3d_matches_the_robust_crate() {
     let mut rng = Pcg64::seed_from_u64(5);
     let c = |p: [f64; 3]| robust::Coord3D { x: p[0], y: p[1], z: p[2] };
     for _ in 0..3000 {
-        let (o, a, b) = (lattice(&mut rng, 20, 1e4), lattice(&mut rng, 20, 1e4), point(&mut rng, 1e4, 0.0));
+        let (o, a, b) =
+            (lattice(&mut rng, 20, 1e4), lattice(&mut rng, 20, 1e4), point(&mut rng, 1e4, 0.0));
         // A fourth point on the plane of the other three, then nudged by an ulp or not.
         let (s, t) = (rng.random_range(-2.0..2.0), rng.random_range(-2.0..2.0));
-        let mut cc: [f64; 3] = core::array::from_fn(|i| o[i] + s * (a[i] - o[i]) + t * (b[i] - o[i]));
+        let mut cc: [f64; 3] =
+            core::array::from_fn(|i| o[i] + s * (a[i] - o[i]) + t * (b[i] - o[i]));
         if rng.random_bool(0.5) {
             let i = rng.random_range(0..3);
             cc[i] = next_up(cc[i]);

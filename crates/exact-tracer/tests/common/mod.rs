@@ -23,11 +23,7 @@ pub fn sub(p: &Q3, r: &Q3) -> Q3 {
 }
 
 pub fn cross(p: &Q3, r: &Q3) -> Q3 {
-    [
-        &p[1] * &r[2] - &p[2] * &r[1],
-        &p[2] * &r[0] - &p[0] * &r[2],
-        &p[0] * &r[1] - &p[1] * &r[0],
-    ]
+    [&p[1] * &r[2] - &p[2] * &r[1], &p[2] * &r[0] - &p[0] * &r[2], &p[0] * &r[1] - &p[1] * &r[0]]
 }
 
 pub fn dot(p: &Q3, r: &Q3) -> Q {
@@ -57,7 +53,9 @@ type Poly = Vec<Q>;
 
 fn poly_add(a: &Poly, b: &Poly) -> Poly {
     (0..a.len().max(b.len()))
-        .map(|i| a.get(i).cloned().unwrap_or_else(Q::zero) + b.get(i).cloned().unwrap_or_else(Q::zero))
+        .map(|i| {
+            a.get(i).cloned().unwrap_or_else(Q::zero) + b.get(i).cloned().unwrap_or_else(Q::zero)
+        })
         .collect()
 }
 
@@ -91,20 +89,14 @@ pub fn perturbed_edge_sign(o: [f64; 3], d: [f64; 3], p: [f64; 3], r: [f64; 3]) -
     };
     let (m0, m1, m2) = (column(p), column(r), d.map(|x| vec![q(x)]));
     let term = |x: &Poly, y: &Poly, z: &Poly| poly_mul(&poly_mul(x, y), z);
-    let plus = [
-        term(&m0[0], &m1[1], &m2[2]),
-        term(&m1[0], &m2[1], &m0[2]),
-        term(&m2[0], &m0[1], &m1[2]),
-    ];
-    let minus = [
-        term(&m2[0], &m1[1], &m0[2]),
-        term(&m1[0], &m0[1], &m2[2]),
-        term(&m0[0], &m2[1], &m1[2]),
-    ];
-    let total = plus.iter().chain(minus.iter().map(poly_neg).collect::<Vec<_>>().iter()).fold(
-        Vec::new(),
-        |acc: Poly, t| poly_add(&acc, t),
-    );
+    let plus =
+        [term(&m0[0], &m1[1], &m2[2]), term(&m1[0], &m2[1], &m0[2]), term(&m2[0], &m0[1], &m1[2])];
+    let minus =
+        [term(&m2[0], &m1[1], &m0[2]), term(&m1[0], &m0[1], &m2[2]), term(&m0[0], &m2[1], &m1[2])];
+    let total = plus
+        .iter()
+        .chain(minus.iter().map(poly_neg).collect::<Vec<_>>().iter())
+        .fold(Vec::new(), |acc: Poly, t| poly_add(&acc, t));
     total.iter().map(sign).find(|s| *s != Sign::Zero).unwrap_or(Sign::Zero)
 }
 
