@@ -458,3 +458,33 @@ fn bad_raycast_inputs_fail_with_one_line_and_leave_nothing() {
         assert_eq!(names(d), inputs, "a file was left behind ({needle})");
     }
 }
+
+#[test]
+fn report_star_is_upright_and_symmetric() {
+    // The generated star (obj/star.obj): tip at (0, 1.5, 5), lowest points at y = -1.2135.
+    // Seen from the origin its tip is at y/z = 0.3 and its lowest points at -0.2427.
+    let star = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../obj/star.obj");
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("star.png");
+    let n = 101u32;
+    ok(&raytrace(&[&star, &png, &"101", &"101", &"--camera", &"origin", &"-q"]));
+    let img = image::open(&png).unwrap().into_luma8();
+    let hit = |i: u32, j: u32| img.get_pixel(i, j).0[0] == 255;
+    let rows: Vec<u32> = (0..n).filter(|&j| (0..n).any(|i| hit(i, j))).collect();
+    let (top, bottom) = (rows[0], *rows.last().unwrap());
+    // Row j's centre is at y = (1 - 2 (j + 0.5) / n) tan(22.5 deg): the first row below the
+    // tip, and the last row above the lowest points (a row or two less near those sharp
+    // points, which the pixel centres may straddle).
+    let t = 22.5f64.to_radians().tan();
+    let y = |j: u32| (1.0 - 2.0 * (f64::from(j) + 0.5) / f64::from(n)) * t;
+    let expect_top = (0..n).find(|&j| y(j) < 0.3).unwrap();
+    let expect_bottom = (0..n).rev().find(|&j| y(j) > -1.213_525_492 / 5.0).unwrap();
+    assert_eq!(top, expect_top, "the tip is at the top: not upside down");
+    assert!(bottom <= expect_bottom && bottom + 3 >= expect_bottom, "{bottom} vs {expect_bottom}");
+    // Symmetric about the vertical axis (the middle column is x = 0 exactly).
+    let asymmetric = (0..n)
+        .flat_map(|j| (0..n).map(move |i| (i, j)))
+        .filter(|&(i, j)| hit(i, j) != hit(n - 1 - i, j))
+        .count();
+    assert!(asymmetric <= 4, "{asymmetric} pixels differ from their mirror image");
+}
