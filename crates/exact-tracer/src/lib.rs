@@ -13,18 +13,19 @@
 //! // Two triangles sharing the edge from (0, 0, 0) to (1, 1, 0), consistently oriented.
 //! let first = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]);
 //! let second = Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]);
-//! // A ray through the exact midpoint of the shared edge, from an awkward origin.
-//! let origin = [0.1, 0.7, 3.0];
+//! // A ray through the midpoint of the shared edge (target - origin is exact here).
+//! let origin = [0.125, 0.75, 3.0];
 //! let ray = Ray::new(origin, [0.5 - origin[0], 0.5 - origin[1], -origin[2]]);
 //!
 //! let exact = Exact;
-//! let hits: Vec<_> = [first, second]
-//!     .iter()
-//!     .filter_map(|tri| exact.intersect(&exact.prepare(tri), &ray, &(), f64::INFINITY))
-//!     .collect();
-//! assert_eq!(hits.len(), 1); // exactly one of the two, never both, never neither
-//! // The ray was built so that it reaches the edge at t = 1, and t is the exact value rounded.
-//! assert_eq!(hits[0].t, 0.5 / 0.5);
+//! let hit = |tri| exact.intersect(&exact.prepare(tri), &ray, &(), f64::INFINITY);
+//! // Exactly one of the two is hit, never both, never neither: by the tie rule below, the
+//! // one on the +x side of the edge as seen along the ray.
+//! let (first_hit, second_hit) = (hit(&first), hit(&second));
+//! assert!(first_hit.is_some() && second_hit.is_none());
+//! // The ray reaches the edge at t = 1, halfway from a to c, and that is reported exactly.
+//! let first_hit = first_hit.unwrap();
+//! assert_eq!((first_hit.t, first_hit.u, first_hit.v), (1.0, 0.0, 0.5));
 //! ```
 //!
 //! # What it guarantees
@@ -270,6 +271,17 @@ fn beyond_sign(
     tri: &Triangle<f64>,
     ray: &Ray<f64>,
 ) -> Option<Sign> {
+    beyond_filtered(n, edges, t_max).sign().or_else(|| {
+        let [o, d, a, b, c] = dyadic_points([ray.origin, ray.dir, tri.a, tri.b, tri.c])?;
+        let t_max = Dyadic::from_f64(t_max)?;
+        let (pa, pb, pc) = (sub3(&a, &o), sub3(&b, &o), sub3(&c, &o));
+        let den = &(&det3(&pa, &pb, &d) + &det3(&pb, &pc, &d)) + &det3(&pc, &pa, &d);
+        Some((&det3(&pa, &pb, &pc) - &(&t_max * &den)).sign())
+    })
+}
+
+/// The filtered value of `F = N - t_max (E_ab + E_bc + E_ca)` (derivation at [`beyond_sign`]).
+fn beyond_filtered(n: &Filtered, edges: &[Filtered; 3], t_max: f64) -> Filtered {
     let [eab, ebc, eca] = edges;
     let value = n.value - t_max * ((eab.value + ebc.value) + eca.value);
     let sum_abs = (eab.value.abs() + ebc.value.abs()) + eca.value.abs();
@@ -277,13 +289,7 @@ fn beyond_sign(
     let bound = (n.bound + t_max * sum_bounds)
         + 5.0 * (f64::EPSILON / 2.0) * (n.value.abs() + t_max * sum_abs)
         + GUARD;
-    Filtered { value, bound }.sign().or_else(|| {
-        let [o, d, a, b, c] = dyadic_points([ray.origin, ray.dir, tri.a, tri.b, tri.c])?;
-        let t_max = Dyadic::from_f64(t_max)?;
-        let (pa, pb, pc) = (sub3(&a, &o), sub3(&b, &o), sub3(&c, &o));
-        let den = &(&det3(&pa, &pb, &d) + &det3(&pb, &pc, &d)) + &det3(&pc, &pa, &d);
-        Some((&det3(&pa, &pb, &pc) - &(&t_max * &den)).sign())
-    })
+    Filtered { value, bound }
 }
 
 /// `t = N / D`, `u = E_ca / D`, `v = E_ab / D` computed exactly and rounded once each.
@@ -304,6 +310,99 @@ fn exact_hit(tri: &Triangle<f64>, ray: &Ray<f64>) -> Option<TriangleHit<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_rational::BigRational;
+    use num_traits::{Signed, ToPrimitive};
+    use rand::{Rng, SeedableRng};
+    use rand_pcg::Pcg64;
+
+    fn q(x: f64) -> BigRational {
+        BigRational::from_float(x).unwrap()
+    }
+
+    fn q_det(p: [&BigRational; 3], r: [&BigRational; 3], s: [&BigRational; 3]) -> BigRational {
+        p[0] * (r[1] * s[2] - r[2] * s[1]) - p[1] * (r[0] * s[2] - r[2] * s[0])
+            + p[2] * (r[0] * s[1] - r[1] * s[0])
+    }
+
+    /// `x` with a random sign and binary exponent in `lo..hi`, zero one time in ten.
+    fn wide(rng: &mut Pcg64, lo: i32, hi: i32) -> f64 {
+        if rng.random_range(0..10) == 0 {
+            return 0.0;
+        }
+        let x = rng.random_range(1.0..2.0) * 2f64.powi(rng.random_range(lo..hi));
+        let x = if rng.random_bool(0.5) { x } else { -x };
+        // powi of a large negative power underflows in steps; scale twice to stay exact-ish.
+        x * 2f64.powi(rng.random_range(-60..0))
+    }
+
+    /// Points whose determinants nearly vanish: a plane through lattice points, one ulp off.
+    fn near_coplanar(rng: &mut Pcg64) -> [[f64; 3]; 4] {
+        let lattice = |rng: &mut Pcg64| -> [f64; 3] {
+            core::array::from_fn(|_| 1e4 + f64::from(rng.random_range(-4096..4096)) / 1024.0)
+        };
+        let (o, a, b) = (lattice(rng), lattice(rng), lattice(rng));
+        let (s, t) =
+            (f64::from(rng.random_range(-8..8)) / 8.0, f64::from(rng.random_range(-8..8)) / 8.0);
+        let mut c: [f64; 3] =
+            core::array::from_fn(|k| o[k] + s * (a[k] - o[k]) + t * (b[k] - o[k]));
+        let k = rng.random_range(0..3);
+        c[k] = f64::from_bits(c[k].to_bits() + rng.random_range(0..3));
+        [o, a, b, c]
+    }
+
+    /// The filters' error bounds hold: `|computed - exact| <= bound` whenever the bound is
+    /// finite, on inputs from the subnormal range to `2^300` (underflow guard) and on nearly
+    /// vanishing determinants (the relative part).
+    #[test]
+    fn filter_bounds_hold_against_exact_rationals() {
+        let mut rng = Pcg64::seed_from_u64(40);
+        let mut worst: f64 = 0.0;
+        for case in 0..2000 {
+            let [o, a, b, c]: [[f64; 3]; 4] = if case % 2 == 0 {
+                near_coplanar(&mut rng)
+            } else {
+                let (lo, hi) = [(-1000, -900), (-400, 300), (-1010, 0)][case % 3];
+                core::array::from_fn(|_| core::array::from_fn(|_| wide(&mut rng, lo, hi)))
+            };
+            let d = c;
+            let (qo, qa, qb, qc) = (o.map(q), a.map(q), b.map(q), c.map(q));
+            let diff = |p: &[BigRational; 3]| -> [BigRational; 3] {
+                core::array::from_fn(|k| &p[k] - &qo[k])
+            };
+            let (qa_o, qb_o, qc_o) = (diff(&qa), diff(&qb), diff(&qc));
+            let edge = det_filtered(sub(a, o), sub(b, o), d, EDGE_REL);
+            let edge_exact = q_det(qa_o.each_ref(), qb_o.each_ref(), qc.each_ref());
+            let orient = det_filtered(sub(a, o), sub(b, o), sub(c, o), ORIENT_REL);
+            let orient_exact = q_det(qa_o.each_ref(), qb_o.each_ref(), qc_o.each_ref());
+            for (f, exact) in [(edge, &edge_exact), (orient, &orient_exact)] {
+                if f.bound.is_finite() && f.value.is_finite() {
+                    let err = (q(f.value) - exact).abs();
+                    assert!(err <= q(f.bound), "{o:?} {a:?} {b:?} {c:?}: {f:?}");
+                    if f.bound > 0.0 {
+                        worst = worst.max((err / q(f.bound)).to_f64().unwrap_or(0.0));
+                    }
+                }
+            }
+            // F = N - t_max (E_ab + E_bc + E_ca), with the three edge tests of (a, b, c).
+            let edges = [
+                det_filtered(sub(a, o), sub(b, o), d, EDGE_REL),
+                det_filtered(sub(b, o), sub(c, o), d, EDGE_REL),
+                det_filtered(sub(c, o), sub(a, o), d, EDGE_REL),
+            ];
+            let qd = &qc;
+            let e_sum = q_det(qa_o.each_ref(), qb_o.each_ref(), qd.each_ref())
+                + q_det(qb_o.each_ref(), qc_o.each_ref(), qd.each_ref())
+                + q_det(qc_o.each_ref(), qa_o.each_ref(), qd.each_ref());
+            let t_max = rng.random_range(0.01..100.0);
+            let f = beyond_filtered(&orient, &edges, t_max);
+            if f.bound.is_finite() && f.value.is_finite() {
+                let exact = &orient_exact - q(t_max) * e_sum;
+                assert!((q(f.value) - exact).abs() <= q(f.bound), "F {o:?} {a:?} {b:?} {c:?}");
+            }
+        }
+        // The bounds are not absurdly loose either: some errors come within a factor 1000.
+        assert!(worst > 1e-3, "worst error / bound = {worst}");
+    }
 
     /// The edge tests alone already reject degenerate triangles (their sum, `n . d`, is zero);
     /// `prepare` checks degeneracy as well, so test the sign logic without that check.
