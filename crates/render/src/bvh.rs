@@ -50,6 +50,19 @@ pub const PAD_ULPS: u32 = 32;
 /// SAH cost of one node traversal step, relative to one primitive test.
 const TRAVERSAL_COST: f64 = 1.0;
 
+/// `min(a, b)`, ignoring `b` if it is NaN (a compare and a select: one `minss`/`minsd`, cheaper
+/// than the NaN-symmetric `f64::min`). `a` is never NaN where this is used.
+#[inline(always)]
+fn min_or<T: PartialOrd>(a: T, b: T) -> T {
+    if b < a { b } else { a }
+}
+
+/// `max(a, b)`, ignoring `b` if it is NaN (see [`min_or`]).
+#[inline(always)]
+fn max_or<T: PartialOrd>(a: T, b: T) -> T {
+    if b > a { b } else { a }
+}
+
 /// An axis-aligned bounding box. The empty box has `min = +inf`, `max = -inf`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb<T> {
@@ -94,19 +107,21 @@ impl<T: Real> Aabb<T> {
         !(0..3).all(|k| self.min[k] <= self.max[k])
     }
 
-    /// Grows the box to hold `p`.
+    /// Grows the box to hold `p` (NaN coordinates are ignored).
+    #[inline]
     pub fn grow_point(&mut self, p: [T; 3]) {
         for (k, x) in p.into_iter().enumerate() {
-            self.min[k] = self.min[k].min(x);
-            self.max[k] = self.max[k].max(x);
+            self.min[k] = min_or(self.min[k], x);
+            self.max[k] = max_or(self.max[k], x);
         }
     }
 
-    /// Grows the box to hold `other`.
+    /// Grows the box to hold `other` (NaN coordinates are ignored).
+    #[inline]
     pub fn grow(&mut self, other: &Self) {
         for k in 0..3 {
-            self.min[k] = self.min[k].min(other.min[k]);
-            self.max[k] = self.max[k].max(other.max[k]);
+            self.min[k] = min_or(self.min[k], other.min[k]);
+            self.max[k] = max_or(self.max[k], other.max[k]);
         }
     }
 
@@ -219,21 +234,25 @@ impl<T: Real> Bvh<T> {
     pub fn build(boxes: &[Aabb<T>]) -> Self {
         let n = boxes.len();
         assert!(u32::try_from(n).is_ok(), "a BVH holds at most u32::MAX primitives, got {n}");
-        let order: Vec<u32> = (0..n as u32).collect();
         if n == 0 {
-            return Self { nodes: Vec::new(), order, depth: 0 };
+            return Self { nodes: Vec::new(), order: Vec::new(), depth: 0 };
         }
         let mut builder = Builder {
-            boxes,
-            centroids: boxes.iter().map(Aabb::center).collect(),
-            order,
+            refs: boxes
+                .iter()
+                .enumerate()
+                .map(|(i, b)| PrimRef { bounds: *b, index: i as u32 })
+                .collect(),
             // A binary tree with leaves of >= 1 primitive has at most 2n - 1 nodes.
             nodes: Vec::with_capacity(2 * n),
             depth: 0,
+            bins: Vec::with_capacity(3 * BINS),
         };
-        builder.node(0, n, 0);
-        let Builder { mut nodes, order, depth, .. } = builder;
+        let info = NodeInfo::of(&builder.refs);
+        builder.node(0, n, 0, &info);
+        let Builder { mut nodes, refs, depth, .. } = builder;
         nodes.shrink_to_fit();
+        let order = refs.iter().map(|r| r.index).collect();
         Self { nodes, order, depth }
     }
 
@@ -457,114 +476,161 @@ impl<T: Real> Slabs<T> {
         for k in 0..3 {
             let (lo, hi) =
                 if self.negative[k] { (b.max[k], b.min[k]) } else { (b.min[k], b.max[k]) };
-            // `max`/`min` return the other operand when one is NaN (0 * inf: the ray lies in
-            // the face plane), so such a slab constrains nothing; `near` and `far` are never
-            // NaN themselves.
-            near = near.max((lo - self.origin[k]) * self.inv_dir[k]);
-            far = far.min((hi - self.origin[k]) * self.inv_dir[k]);
+            // `max_or`/`min_or` ignore a NaN distance (0 * inf: the ray lies in the face
+            // plane), so such a slab constrains nothing; `near` and `far` are never NaN
+            // themselves (a NaN `limit` makes every box miss).
+            near = max_or(near, (lo - self.origin[k]) * self.inv_dir[k]);
+            far = min_or(far, (hi - self.origin[k]) * self.inv_dir[k]);
         }
         (near <= far * slack::<T>()).then_some(near)
     }
 }
 
-/// Build state: the boxes, their centroids and the slot order being partitioned in place.
-struct Builder<'a, T> {
-    boxes: &'a [Aabb<T>],
-    centroids: Vec<[T; 3]>,
-    order: Vec<u32>,
-    nodes: Vec<Node<T>>,
-    depth: usize,
+/// A primitive during the build: its box and original index, moved around by partitioning so
+/// that each node's primitives are contiguous in memory (no gather through an index array).
+#[derive(Clone, Copy)]
+struct PrimRef<T> {
+    bounds: Aabb<T>,
+    index: u32,
 }
 
-/// A candidate SAH split: bin boundary `bin` (left holds bins `0..=bin`) on `axis`.
+impl<T: Real> PrimRef<T> {
+    /// Twice the box centre along `axis`, in f64: binning needs only an affine image of the
+    /// centroid, and the f64 sum of two `T` values cannot overflow.
+    #[inline(always)]
+    fn centroid2(&self, axis: usize) -> f64 {
+        self.bounds.min[axis].to_f64() + self.bounds.max[axis].to_f64()
+    }
+}
+
+/// What a node needs to know of its primitives: their bounds and their (doubled) centroid
+/// bounds.
+#[derive(Clone, Copy)]
+struct NodeInfo<T> {
+    bounds: Aabb<T>,
+    cmin: [f64; 3],
+    cmax: [f64; 3],
+}
+
+impl<T: Real> NodeInfo<T> {
+    fn empty() -> Self {
+        Self { bounds: Aabb::empty(), cmin: [f64::INFINITY; 3], cmax: [f64::NEG_INFINITY; 3] }
+    }
+
+    #[inline(always)]
+    fn add(&mut self, r: &PrimRef<T>) {
+        self.bounds.grow(&r.bounds);
+        for k in 0..3 {
+            let c = r.centroid2(k);
+            self.cmin[k] = min_or(self.cmin[k], c);
+            self.cmax[k] = max_or(self.cmax[k], c);
+        }
+    }
+
+    fn of(refs: &[PrimRef<T>]) -> Self {
+        let mut info = Self::empty();
+        for r in refs {
+            info.add(r);
+        }
+        info
+    }
+}
+
+/// One SAH bin: the union of its primitives' boxes and their number.
+#[derive(Clone, Copy)]
+struct Bin<T> {
+    bounds: Aabb<T>,
+    count: u32,
+}
+
+/// Build state: the primitives being partitioned in place, the nodes written so far, and bins
+/// reused from node to node.
+struct Builder<T> {
+    refs: Vec<PrimRef<T>>,
+    nodes: Vec<Node<T>>,
+    depth: usize,
+    bins: Vec<Bin<T>>,
+}
+
+/// A candidate SAH split: the left side holds bins `0..=bin` of `binning` on `axis`.
 #[derive(Clone, Copy)]
 struct Split {
     axis: usize,
     bin: usize,
+    binning: Binning,
     cost: f64,
 }
 
-/// Maps centroid coordinates to bins along one axis.
+/// Maps (doubled) centroid coordinates to `count` bins along one axis.
 #[derive(Clone, Copy)]
 struct Binning {
     min: f64,
     scale: f64,
+    count: usize,
 }
 
 impl Binning {
-    fn new(min: f64, extent: f64) -> Self {
-        // Slightly under BINS / extent so that the largest centroid lands in the last bin.
-        Self { min, scale: BINS as f64 * (1.0 - 1e-9) / extent }
+    fn new(min: f64, extent: f64, count: usize) -> Self {
+        // Slightly under count / extent so that the largest centroid lands in the last bin.
+        Self { min, scale: count as f64 * (1.0 - 1e-9) / extent, count }
     }
 
     #[inline(always)]
     fn bin(&self, c: f64) -> usize {
         // `as usize` saturates (and maps NaN to 0); `min` guards the top.
-        (((c - self.min) * self.scale) as usize).min(BINS - 1)
+        (((c - self.min) * self.scale) as usize).min(self.count - 1)
     }
 }
 
-impl<T: Real> Builder<'_, T> {
-    /// Builds the subtree over slots `start..end` at `depth`; returns its node index.
-    fn node(&mut self, start: usize, end: usize, depth: usize) -> usize {
+impl<T: Real> Builder<T> {
+    /// Builds the subtree over `refs[start..end]` (described by `info`) at `depth`; returns
+    /// its node index.
+    fn node(&mut self, start: usize, end: usize, depth: usize, info: &NodeInfo<T>) -> usize {
         self.depth = self.depth.max(depth);
         let index = self.nodes.len();
-        let mut bounds = Aabb::empty();
-        let mut centroid_bounds = Aabb::empty();
-        for &p in &self.order[start..end] {
-            bounds.grow(&self.boxes[p as usize]);
-            centroid_bounds.grow_point(self.centroids[p as usize]);
-        }
-        self.nodes.push(Node { bounds: bounds.padded(), offset: start as u32, count: 0 });
+        self.nodes.push(Node { bounds: info.bounds.padded(), offset: start as u32, count: 0 });
         let n = end - start;
-        let mid = match self.choose_split(start, end, depth, &bounds, &centroid_bounds) {
-            Some(mid) => mid,
-            None => {
-                self.nodes[index].count = n as u32;
-                return index;
-            }
+        let Some((mid, left, right)) = self.choose_split(start, end, depth, info) else {
+            self.nodes[index].count = n as u32;
+            return index;
         };
-        self.node(start, mid, depth + 1);
-        let right = self.node(mid, end, depth + 1);
+        self.node(start, mid, depth + 1, &left);
+        let right = self.node(mid, end, depth + 1, &right);
         self.nodes[index].offset = right as u32;
         index
     }
 
-    /// Partitions slots `start..end` and returns the first slot of the second child, or
-    /// `None` if the node should be a leaf.
+    /// Partitions `refs[start..end]` and returns the first index of the second child with
+    /// both children's descriptions, or `None` if the node should be a leaf.
     fn choose_split(
         &mut self,
         start: usize,
         end: usize,
         depth: usize,
-        bounds: &Aabb<T>,
-        centroid_bounds: &Aabb<T>,
-    ) -> Option<usize> {
+        info: &NodeInfo<T>,
+    ) -> Option<(usize, NodeInfo<T>, NodeInfo<T>)> {
         let n = end - start;
         if n == 1 {
             return None;
         }
-        let extent = centroid_bounds.extent().map(Real::to_f64);
+        let extent: [f64; 3] = core::array::from_fn(|k| info.cmax[k] - info.cmin[k]);
         // SAH is allowed only while a fall-back to median splits (which halve the count) from
-        // each child can still finish above MAX_DEPTH; see `Bvh::build`.
+        // each child can still finish above MAX_DEPTH.
         let sah_allowed = depth + 1 + ceil_log2(n) < MAX_DEPTH;
         let flat = !extent.iter().any(|&e| e > 0.0);
         if !sah_allowed || flat {
             return (n > MAX_LEAF).then(|| self.median_split(start, end, &extent));
         }
-        let split = self.best_split(start, end, centroid_bounds, &extent);
-        let area = bounds.half_area();
-        let cost = |s: &Split| {
+        let area = info.bounds.half_area();
+        let split_cost = |s: &Split| {
             if area > 0.0 { TRAVERSAL_COST + s.cost / area } else { TRAVERSAL_COST }
         };
-        match split {
-            Some(s) if n > MAX_LEAF || cost(&s) < n as f64 => {
-                let binning = Binning::new(centroid_bounds.min[s.axis].to_f64(), extent[s.axis]);
-                let centroids = &self.centroids;
-                let mid = partition(&mut self.order[start..end], |p| {
-                    binning.bin(centroids[p as usize][s.axis].to_f64()) <= s.bin
+        match self.best_split(start, end, info.cmin, &extent) {
+            Some(s) if n > MAX_LEAF || split_cost(&s) < n as f64 => {
+                let (mid, left, right) = partition(&mut self.refs[start..end], |r| {
+                    s.binning.bin(r.centroid2(s.axis)) <= s.bin
                 });
-                Some(start + mid)
+                Some((start + mid, left, right))
             }
             Some(_) => None,
             // Every axis put all centroids in one bin (possible only with extents so small
@@ -574,93 +640,102 @@ impl<T: Real> Builder<'_, T> {
     }
 
     /// The cheapest binned SAH split over all axes: `cost` is `n_l A_l + n_r A_r` (half
-    /// areas). `None` if no axis has two non-empty sides.
+    /// areas). `None` if no axis has two non-empty sides. Small nodes use fewer bins.
     fn best_split(
-        &self,
+        &mut self,
         start: usize,
         end: usize,
-        centroid_bounds: &Aabb<T>,
+        cmin: [f64; 3],
         extent: &[f64; 3],
     ) -> Option<Split> {
-        let mut bins = [[(Aabb::<T>::empty(), 0u32); BINS]; 3];
+        let count = BINS.min(end - start);
         let binnings: [Option<Binning>; 3] = core::array::from_fn(|k| {
-            (extent[k] > 0.0).then(|| Binning::new(centroid_bounds.min[k].to_f64(), extent[k]))
+            (extent[k] > 0.0).then(|| Binning::new(cmin[k], extent[k], count))
         });
-        for &p in &self.order[start..end] {
-            let c = self.centroids[p as usize];
-            let b = &self.boxes[p as usize];
-            for k in 0..3 {
-                if let Some(binning) = &binnings[k] {
-                    let slot = &mut bins[k][binning.bin(c[k].to_f64())];
-                    slot.0.grow(b);
-                    slot.1 += 1;
+        let empty = Bin { bounds: Aabb::empty(), count: 0 };
+        self.bins.clear();
+        self.bins.resize(3 * count, empty);
+        for r in &self.refs[start..end] {
+            for (k, binning) in binnings.iter().enumerate() {
+                if let Some(binning) = binning {
+                    let bin = &mut self.bins[k * count + binning.bin(r.centroid2(k))];
+                    bin.bounds.grow(&r.bounds);
+                    bin.count += 1;
                 }
             }
         }
         let mut best: Option<Split> = None;
-        for (axis, bins) in bins.iter().enumerate() {
-            if binnings[axis].is_none() {
-                continue;
-            }
-            // Right-to-left sweep: cost of everything right of each boundary.
-            let mut right_cost = [0.0f64; BINS];
+        let mut right_cost = [0.0f64; BINS];
+        for (axis, binning) in binnings.iter().enumerate() {
+            let Some(binning) = *binning else { continue };
+            let bins = &self.bins[axis * count..(axis + 1) * count];
+            // Right-to-left sweep: cost of everything right of each boundary (-1: nothing).
             let mut acc = Aabb::empty();
-            let mut count = 0u32;
-            for i in (1..BINS).rev() {
-                acc.grow(&bins[i].0);
-                count += bins[i].1;
+            let mut on_right = 0u32;
+            for i in (1..count).rev() {
+                acc.grow(&bins[i].bounds);
+                on_right += bins[i].count;
                 right_cost[i - 1] =
-                    if count > 0 { f64::from(count) * acc.half_area() } else { -1.0 };
+                    if on_right > 0 { f64::from(on_right) * acc.half_area() } else { -1.0 };
             }
             let mut acc = Aabb::empty();
-            let mut count = 0u32;
-            for (i, bin) in bins.iter().enumerate().take(BINS - 1) {
-                acc.grow(&bin.0);
-                count += bin.1;
-                if count == 0 || right_cost[i] < 0.0 {
+            let mut on_left = 0u32;
+            for (i, bin) in bins[..count - 1].iter().enumerate() {
+                acc.grow(&bin.bounds);
+                on_left += bin.count;
+                if on_left == 0 || right_cost[i] < 0.0 {
                     continue;
                 }
-                let cost = f64::from(count) * acc.half_area() + right_cost[i];
+                let cost = f64::from(on_left) * acc.half_area() + right_cost[i];
                 if best.is_none_or(|b| cost < b.cost) {
-                    best = Some(Split { axis, bin: i, cost });
+                    best = Some(Split { axis, bin: i, binning, cost });
                 }
             }
         }
         best
     }
 
-    /// Splits slots `start..end` at their middle by centroid along the widest axis.
-    fn median_split(&mut self, start: usize, end: usize, extent: &[f64; 3]) -> usize {
+    /// Splits `refs[start..end]` at their middle by centroid along the widest axis.
+    fn median_split(
+        &mut self,
+        start: usize,
+        end: usize,
+        extent: &[f64; 3],
+    ) -> (usize, NodeInfo<T>, NodeInfo<T>) {
         let mut axis = 0;
         for k in 1..3 {
             if extent[k] > extent[axis] {
                 axis = k;
             }
         }
-        let mid = (end - start) / 2;
-        let centroids = &self.centroids;
-        self.order[start..end].select_nth_unstable_by(mid, |&a, &b| {
-            let ca = centroids[a as usize][axis].to_f64();
-            let cb = centroids[b as usize][axis].to_f64();
-            ca.total_cmp(&cb)
+        let mid = start + (end - start) / 2;
+        self.refs[start..end].select_nth_unstable_by(mid - start, |a, b| {
+            a.centroid2(axis).total_cmp(&b.centroid2(axis))
         });
-        start + mid
+        (mid, NodeInfo::of(&self.refs[start..mid]), NodeInfo::of(&self.refs[mid..end]))
     }
 }
 
-/// Moves the elements satisfying `left` to the front; returns how many there are.
-fn partition(v: &mut [u32], mut left: impl FnMut(u32) -> bool) -> usize {
+/// Moves the primitives satisfying `left` to the front; returns how many there are and the
+/// descriptions of both sides, gathered on the way (each primitive is looked at once).
+fn partition<T: Real>(
+    v: &mut [PrimRef<T>],
+    mut left: impl FnMut(&PrimRef<T>) -> bool,
+) -> (usize, NodeInfo<T>, NodeInfo<T>) {
+    let (mut l, mut r) = (NodeInfo::empty(), NodeInfo::empty());
     let mut i = 0;
     let mut j = v.len();
     while i < j {
-        if left(v[i]) {
+        if left(&v[i]) {
+            l.add(&v[i]);
             i += 1;
         } else {
+            r.add(&v[i]);
             j -= 1;
             v.swap(i, j);
         }
     }
-    i
+    (i, l, r)
 }
 
 /// `ceil(log2(n))` for `n >= 1`.
@@ -678,14 +753,23 @@ mod tests {
     }
 
     #[test]
-    fn partition_keeps_every_element() {
-        let mut v: Vec<u32> = (0..100).collect();
-        let mid = partition(&mut v, |x| x % 3 == 0);
+    fn partition_keeps_every_element_and_describes_both_sides() {
+        let mut v: Vec<PrimRef<f64>> = (0..100)
+            .map(|i| {
+                let x = f64::from(i);
+                PrimRef { bounds: Aabb { min: [x, 0.0, 0.0], max: [x, 1.0, 2.0] }, index: i }
+            })
+            .collect();
+        let (mid, l, r) = partition(&mut v, |p| p.index % 3 == 0);
         assert_eq!(mid, 34);
-        assert!(v[..mid].iter().all(|x| x % 3 == 0));
-        assert!(v[mid..].iter().all(|x| x % 3 != 0));
-        v.sort_unstable();
-        assert_eq!(v, (0..100).collect::<Vec<_>>());
+        assert!(v[..mid].iter().all(|p| p.index % 3 == 0));
+        assert!(v[mid..].iter().all(|p| p.index % 3 != 0));
+        assert_eq!((l.bounds.min[0], l.bounds.max[0]), (0.0, 99.0));
+        assert_eq!((r.bounds.min[0], r.bounds.max[0]), (1.0, 98.0));
+        assert_eq!((l.cmin[2], l.cmax[2], r.cmin[0]), (2.0, 2.0, 2.0));
+        let mut idx: Vec<u32> = v.iter().map(|p| p.index).collect();
+        idx.sort_unstable();
+        assert_eq!(idx, (0..100).collect::<Vec<_>>());
     }
 
     #[test]

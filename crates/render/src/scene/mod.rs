@@ -244,7 +244,9 @@ impl Mesh {
 /// Replaces each `l` statement with an empty comment so that tobj does not read it as a face.
 fn blank_polylines(text: &str) -> Cow<'_, str> {
     let is_polyline = |line: &str| line.split_whitespace().next() == Some("l");
-    if !text.lines().any(is_polyline) {
+    // A substring search first: most files have no `l` statement and skip the line scan.
+    let maybe = text.contains("l ") || text.contains("l\t");
+    if !maybe || !text.lines().any(is_polyline) {
         return Cow::Borrowed(text);
     }
     let mut out = String::with_capacity(text.len());

@@ -1,0 +1,435 @@
+//! The BVH must change nothing but speed: closest-hit and any-hit queries equal a plain loop
+//! over the triangles, in f32 and f64, on random soups, on scenes full of exact ties, on
+//! inputs that defeat the SAH, and on the real meshes; and the tree's invariants hold.
+
+use std::marker::PhantomData;
+use std::path::Path;
+
+use intersect::{Hit, Intersector, Ray, Real, Triangle, TriangleHit};
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64;
+use render::accel::Accel;
+use render::bvh::{Aabb, MAX_DEPTH, MAX_LEAF, NodeKind};
+use render::scene::Mesh;
+
+/// Plain Moller-Trumbore in precision `T`, written for these tests only.
+struct Mt<T>(PhantomData<T>);
+
+fn mt<T>() -> Mt<T> {
+    Mt(PhantomData)
+}
+
+fn sub<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot<T: Real>(a: [T; 3], b: [T; 3]) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// Whether the triangle has zero area: its edge cross product, computed in f64, is zero
+/// (exact for f32 coordinates, whose products f64 holds exactly).
+fn degenerate<T: Real>(p: &Triangle<T>) -> bool {
+    let [a, b, c] = p.vertices().map(|v| v.map(Real::to_f64));
+    cross(sub(b, a), sub(c, a)) == [0.0; 3]
+}
+
+/// Moller-Trumbore; degenerate triangles are never hit (for them the determinant is rounding
+/// noise, and so would be `t`).
+fn moller_trumbore<T: Real>(p: &Triangle<T>, ray: &Ray<T>, t_max: T) -> Option<TriangleHit<T>> {
+    if degenerate(p) {
+        return None;
+    }
+    let (e1, e2) = (sub(p.b, p.a), sub(p.c, p.a));
+    let pv = cross(ray.dir, e2);
+    let det = dot(e1, pv);
+    if det == T::ZERO || !det.is_finite() {
+        return None;
+    }
+    let inv = T::ONE / det;
+    let s = sub(ray.origin, p.a);
+    let u = dot(s, pv) * inv;
+    // Written so that NaN fails every test.
+    if !(u >= T::ZERO && u <= T::ONE) {
+        return None;
+    }
+    let q = cross(s, e1);
+    let v = dot(ray.dir, q) * inv;
+    if !(v >= T::ZERO && u + v <= T::ONE) {
+        return None;
+    }
+    let t = dot(e2, q) * inv;
+    (t > T::ZERO && t <= t_max).then_some(TriangleHit { t, u, v })
+}
+
+impl<T: Real> Intersector for Mt<T> {
+    type Real = T;
+    type Prim = Triangle<T>;
+    type RayData = ();
+    const NAME: &'static str = "test-mt";
+
+    fn prepare(&self, tri: &Triangle<T>) -> Triangle<T> {
+        *tri
+    }
+    fn prepare_ray(&self, _ray: &Ray<T>) {}
+    fn intersect(&self, p: &Triangle<T>, ray: &Ray<T>, _: &(), t_max: T) -> Option<TriangleHit<T>> {
+        moller_trumbore(p, ray, t_max)
+    }
+}
+
+/// The oracle: every triangle of the original slice, in order, nearest kept, ties to the
+/// lower index. Independent of the Accel's storage.
+fn reference<T: Real>(tris: &[Triangle<T>], ray: &Ray<T>) -> Option<Hit<T>> {
+    let mut best: Option<Hit<T>> = None;
+    for (i, tri) in tris.iter().enumerate() {
+        if let Some(h) = moller_trumbore(tri, ray, T::INFINITY) {
+            let hit = Hit::new(i as u32, h);
+            if best.is_none_or(|b| hit.t < b.t) {
+                best = Some(hit);
+            }
+        }
+    }
+    best
+}
+
+/// Checks every query on `ray` against the oracle; returns whether the ray hit something.
+fn check_ray<T: Real>(accel: &Accel<Mt<T>>, tris: &[Triangle<T>], ray: &Ray<T>) -> bool {
+    let expected = reference(tris, ray);
+    let got = accel.closest_hit(ray);
+    assert_eq!(got, expected, "closest hit differs from the oracle for {ray:?}");
+    assert_eq!(accel.closest_hit_brute_force(ray), expected, "brute force, {ray:?}");
+    let inf = T::INFINITY;
+    assert_eq!(accel.any_hit(ray, inf), expected.is_some(), "any hit, {ray:?}");
+    assert_eq!(accel.any_hit_brute_force(ray, inf), expected.is_some());
+    if let Some(h) = expected {
+        // The limit exactly at the hit includes it; just below excludes the nearest hit (and
+        // every other one unless some other triangle is hit at the same distance).
+        assert!(accel.any_hit(ray, h.t), "any hit at t_max = t, {ray:?}");
+        assert_eq!(accel.closest_hit_within(ray, h.t), Some(h));
+        let below = h.t * T::from_f64(0.999);
+        assert_eq!(accel.any_hit(ray, below), accel.any_hit_brute_force(ray, below));
+        assert!(!accel.any_hit(ray, below), "{ray:?}");
+        assert_eq!(accel.closest_hit_within(ray, below), None);
+        let beyond = h.t * T::from_f64(1.5);
+        assert_eq!(accel.closest_hit_within(ray, beyond), Some(h));
+    }
+    expected.is_some()
+}
+
+/// Tree invariants: slots form a permutation covered by exactly one leaf each, every
+/// triangle's box lies in its leaf's box, children lie in parents, depth and leaf size bounds.
+fn check_invariants<T: Real>(accel: &Accel<Mt<T>>, tris: &[Triangle<T>]) {
+    let bvh = accel.bvh();
+    let n = tris.len();
+    let mut sorted = bvh.order().to_vec();
+    sorted.sort_unstable();
+    assert_eq!(sorted, (0..n as u32).collect::<Vec<_>>(), "order is a permutation");
+    if n == 0 {
+        assert_eq!(bvh.node_count(), 0);
+        return;
+    }
+    let mut covered = vec![0u32; n];
+    let mut leaves = 0;
+    let mut max_depth = 0;
+    let mut stack = vec![(0usize, 0usize)];
+    while let Some((i, depth)) = stack.pop() {
+        max_depth = max_depth.max(depth);
+        let bounds = bvh.node_bounds(i);
+        match bvh.node_kind(i) {
+            NodeKind::Leaf(slots) => {
+                leaves += 1;
+                assert!(!slots.is_empty() && slots.len() <= MAX_LEAF);
+                for slot in slots {
+                    covered[slot] += 1;
+                    let tri = &tris[bvh.order()[slot] as usize];
+                    assert!(bounds.contains(&Aabb::of_triangle(tri)), "triangle outside leaf");
+                }
+            }
+            NodeKind::Interior { left, right } => {
+                assert_eq!(left, i + 1, "depth-first layout");
+                for child in [left, right] {
+                    assert!(bounds.contains(&bvh.node_bounds(child)), "child outside parent");
+                    stack.push((child, depth + 1));
+                }
+            }
+        }
+    }
+    assert!(covered.iter().all(|&c| c == 1), "each slot in exactly one leaf");
+    assert_eq!(bvh.node_count(), 2 * leaves - 1, "every node reachable from the root");
+    assert_eq!(bvh.leaf_count(), leaves);
+    assert_eq!(bvh.depth(), max_depth);
+    assert!(max_depth < MAX_DEPTH);
+    let stats = accel.stats();
+    assert_eq!((stats.triangles, stats.nodes, stats.leaves), (n, bvh.node_count(), leaves));
+    assert!(stats.bytes_per_triangle() > 0.0);
+}
+
+fn point(rng: &mut Pcg64, lo: f64, hi: f64) -> [f64; 3] {
+    [rng.random_range(lo..hi), rng.random_range(lo..hi), rng.random_range(lo..hi)]
+}
+
+/// A soup: small and large triangles, slivers, degenerate ones (repeated vertex, collinear),
+/// exact duplicates and axis-aligned ones.
+fn soup(rng: &mut Pcg64, n: usize) -> Vec<Triangle<f64>> {
+    let mut tris = Vec::with_capacity(n);
+    while tris.len() < n {
+        let c = point(rng, -1.0, 1.0);
+        let s = if rng.random_bool(0.05) { 1.0 } else { 0.08 };
+        let mut corner = || core::array::from_fn(|k| c[k] + rng.random_range(-s..s));
+        let (a, b, mut cc) = (corner(), corner(), corner());
+        // On a 1/16 grid, so that collinear stays exactly collinear in f32.
+        let g = |x: f64| (x * 16.0).round() / 16.0;
+        match rng.random_range(0..10) {
+            0 => cc = b, // repeated vertex
+            1 => {
+                let (a, b) = (a.map(g), b.map(g));
+                let c = core::array::from_fn(|k| 2.0 * b[k] - a[k]);
+                tris.push(Triangle::new(a, b, c)); // collinear
+                continue;
+            }
+            2 => {
+                // In the plane x = a.x, on the grid: exact coordinates, shared planes.
+                let (a, b, cc) = (a.map(g), b.map(g), cc.map(g));
+                tris.push(Triangle::new(a, [a[0], b[1], b[2]], [a[0], cc[1], cc[2]]));
+                continue;
+            }
+            _ => {}
+        }
+        tris.push(Triangle::new(a, b, cc));
+        if rng.random_bool(0.05) {
+            tris.push(Triangle::new(a, b, cc)); // exact duplicate: a tie on every hit
+        }
+    }
+    tris.truncate(n);
+    tris
+}
+
+/// Rays from outside and inside, aimed at the soup, some along axes (zero direction
+/// components, origins on grid planes).
+fn rays(rng: &mut Pcg64, count: usize, tris: &[Triangle<f64>]) -> Vec<Ray<f64>> {
+    let bounds = bounds_of(tris);
+    (0..count)
+        .map(|i| {
+            // Half the targets inside a triangle, half anywhere in the soup's box.
+            let target: [f64; 3] = if i % 2 == 0 {
+                let t = &tris[rng.random_range(0..tris.len())];
+                let (u, v) = (rng.random_range(0.0..1.0), rng.random_range(0.0..1.0));
+                let (u, v) = if u + v > 1.0 { (1.0 - u, 1.0 - v) } else { (u, v) };
+                t.point(u, v)
+            } else {
+                core::array::from_fn(|k| rng.random_range(bounds.min[k]..=bounds.max[k]))
+            };
+            match i % 5 {
+                0 | 1 => {
+                    let o = point(rng, -4.0, 4.0);
+                    Ray::new(o, sub(target, o))
+                }
+                2 => {
+                    let o = point(rng, -0.5, 0.5);
+                    Ray::new(o, sub(target, o))
+                }
+                3 => {
+                    // Axis-aligned from far away, origin on the 1/16 grid.
+                    let axis = rng.random_range(0..3);
+                    let sign = if rng.random_bool(0.5) { 1.0 } else { -1.0 };
+                    let mut o = target.map(|x| (x * 16.0).round() / 16.0);
+                    o[axis] = -4.0 * sign;
+                    let mut d = [0.0; 3];
+                    d[axis] = sign;
+                    Ray::new(o, d)
+                }
+                _ => {
+                    // One zero component, in a plane of the grid.
+                    let o = point(rng, -4.0, 4.0);
+                    let mut d = sub(target, o);
+                    let axis = rng.random_range(0..3);
+                    d[axis] = if rng.random_bool(0.5) { 0.0 } else { -0.0 };
+                    let mut o = o;
+                    o[axis] = (target[axis] * 16.0).round() / 16.0;
+                    Ray::new(o, d)
+                }
+            }
+        })
+        .collect()
+}
+
+fn bounds_of(tris: &[Triangle<f64>]) -> Aabb<f64> {
+    tris.iter().fold(Aabb::empty(), |b, t| b.union(&Aabb::of_triangle(t)))
+}
+
+fn check_soup<T: Real>(tris64: &[Triangle<f64>], rays64: &[Ray<f64>]) -> usize {
+    let tris: Vec<Triangle<T>> = tris64.iter().map(Triangle::cast).collect();
+    let accel = Accel::build(mt::<T>(), &tris);
+    check_invariants(&accel, &tris);
+    rays64.iter().filter(|r| check_ray(&accel, &tris, &r.cast())).count()
+}
+
+#[test]
+fn random_soups_match_the_oracle_in_f64_and_f32() {
+    let mut rng = Pcg64::seed_from_u64(7);
+    for (n, ray_count) in [(1, 200), (2, 200), (9, 300), (100, 500), (3000, 1500)] {
+        let tris = soup(&mut rng, n);
+        let rays = rays(&mut rng, ray_count, &tris);
+        let hits64 = check_soup::<f64>(&tris, &rays);
+        let hits32 = check_soup::<f32>(&tris, &rays);
+        // The test must be able to fail: many rays are aimed at triangles.
+        eprintln!("{n} triangles: {hits64} and {hits32} hits of {ray_count} rays");
+        assert!(hits64 > ray_count / 10 && hits32 > ray_count / 10, "{hits64} {hits32}");
+    }
+}
+
+/// A closed surface on an integer grid (a box of 8 x 6 x 4 unit cells, each face split into
+/// two triangles) hit exactly at vertices and edges: every hit there is a tie.
+#[test]
+fn exact_ties_on_shared_edges_and_vertices() {
+    let (nx, ny, nz) = (8, 6, 4);
+    let mut tris = Vec::new();
+    let mut quad = |p: [f64; 3], u: [f64; 3], v: [f64; 3]| {
+        let at = |a: f64, b: f64| core::array::from_fn(|k| p[k] + a * u[k] + b * v[k]);
+        tris.push(Triangle::new(at(0.0, 0.0), at(1.0, 0.0), at(1.0, 1.0)));
+        tris.push(Triangle::new(at(0.0, 0.0), at(1.0, 1.0), at(0.0, 1.0)));
+    };
+    for i in 0..nx {
+        for j in 0..ny {
+            for z in [0.0, f64::from(nz)] {
+                quad([f64::from(i), f64::from(j), z], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+            }
+        }
+        for k in 0..nz {
+            for y in [0.0, f64::from(ny)] {
+                quad([f64::from(i), y, f64::from(k)], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+            }
+        }
+    }
+    for j in 0..ny {
+        for k in 0..nz {
+            for x in [0.0, f64::from(nx)] {
+                quad([x, f64::from(j), f64::from(k)], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
+            }
+        }
+    }
+    let accel = Accel::build(mt::<f64>(), &tris);
+    check_invariants(&accel, &tris);
+    let accel32 = Accel::build(mt::<f32>(), &tris.iter().map(Triangle::cast).collect::<Vec<_>>());
+    let tris32: Vec<Triangle<f32>> = tris.iter().map(Triangle::cast).collect();
+    let mut rng = Pcg64::seed_from_u64(11);
+    let mut hits = 0;
+    for _ in 0..3000 {
+        // Targets on grid vertices and half-grid edge points, origins anywhere or on grid.
+        let target = [
+            f64::from(rng.random_range(0..=2 * nx)) * 0.5,
+            f64::from(rng.random_range(0..=2 * ny)) * 0.5,
+            f64::from(rng.random_range(0..=2 * nz)) * 0.5,
+        ];
+        let origin = if rng.random_bool(0.5) {
+            point(&mut rng, -10.0, 20.0)
+        } else {
+            [rng.random_range(-3..12), rng.random_range(-3..10), rng.random_range(-3..8)]
+                .map(f64::from)
+        };
+        let ray = Ray::new(origin, sub(target, origin));
+        if ray.dir == [0.0; 3] {
+            continue;
+        }
+        hits += usize::from(check_ray(&accel, &tris, &ray));
+        check_ray(&accel32, &tris32, &ray.cast());
+    }
+    assert!(hits > 2000, "{hits}");
+}
+
+#[test]
+fn identical_triangles_report_the_lowest_index() {
+    let t = Triangle::new([0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]);
+    let other = Triangle::new([5.0, 5.0, 5.0], [6.0, 5.0, 5.0], [5.0, 6.0, 5.0]);
+    let mut tris = vec![other; 37];
+    tris.extend(vec![t; 1000]);
+    let accel = Accel::build(mt::<f64>(), &tris);
+    check_invariants(&accel, &tris);
+    let hit = accel.closest_hit(&Ray::new([0.25, 0.25, 0.0], [0.0, 0.0, 1.0])).unwrap();
+    assert_eq!((hit.prim, hit.t), (37, 1.0));
+}
+
+/// Triangles whose centroids form a geometric progression: SAH bins on a uniform grid would
+/// peel them off one or two at a time, a tree as deep as the input is long. The depth guard
+/// must keep the depth under MAX_DEPTH, and queries must stay exact.
+#[test]
+fn depth_stays_bounded_when_sah_degenerates() {
+    let tris: Vec<Triangle<f64>> = (0..1500)
+        .map(|k| {
+            let x = 1.2f64.powi(k);
+            Triangle::new([x, 0.0, 0.0], [x * 1.1, 0.0, 0.0], [x, x * 0.1, 1.0])
+        })
+        .collect();
+    let accel = Accel::build(mt::<f64>(), &tris);
+    check_invariants(&accel, &tris);
+    eprintln!("depth {}", accel.stats().depth);
+    assert!(accel.stats().depth < MAX_DEPTH);
+    let mut rng = Pcg64::seed_from_u64(3);
+    let mut hits = 0;
+    for k in (0..1500).step_by(7) {
+        let x = 1.2f64.powi(k);
+        let target = [x * rng.random_range(1.0..1.05), x * 0.01, 0.1];
+        let origin = [target[0], target[1], -1.0];
+        hits += usize::from(check_ray(&accel, &tris, &Ray::new(origin, [0.0, 0.0, 1.0])));
+    }
+    assert_eq!(hits, 215, "every ray is aimed inside a triangle");
+}
+
+#[test]
+fn empty_scene_never_hits() {
+    let accel = Accel::build(mt::<f64>(), &[]);
+    check_invariants(&accel, &[]);
+    let ray = Ray::new([0.0; 3], [0.0, 0.0, 1.0]);
+    assert_eq!(accel.closest_hit(&ray), None);
+    assert!(!accel.any_hit(&ray, f64::INFINITY));
+    assert!(accel.is_empty());
+}
+
+/// The shared test meshes, beside the repository (see `/work/shared/meshes/README.md`).
+fn shared_mesh(name: &str) -> Mesh {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/meshes");
+    assert!(
+        dir.is_dir(),
+        "the shared test meshes are missing: expected the folder {} (shared/meshes beside the \
+         repository); these tests need it",
+        dir.display()
+    );
+    Mesh::load(&dir.join(name)).unwrap()
+}
+
+/// Rays from a sphere around the mesh towards random points of its bounding box.
+fn rays_around(mesh: &Mesh, rng: &mut Pcg64, count: usize) -> Vec<Ray<f64>> {
+    let (c, r) = mesh.bounding_sphere();
+    let b = mesh.bounds();
+    (0..count)
+        .map(|_| {
+            let d = point(rng, -1.0, 1.0);
+            let len = dot(d, d).sqrt().max(1e-3);
+            let o = core::array::from_fn(|k| c[k] + 2.0 * r * d[k] / len);
+            let target: [f64; 3] = core::array::from_fn(|k| rng.random_range(b.min[k]..=b.max[k]));
+            Ray::new(o, sub(target, o))
+        })
+        .collect()
+}
+
+#[test]
+fn real_meshes_match_the_oracle() {
+    let mut rng = Pcg64::seed_from_u64(5);
+    for (name, ray_count) in
+        [("stanford-bunny.obj", 150), ("teapot.obj", 600), ("suzanne.obj", 1000), ("cow.obj", 600)]
+    {
+        let mesh = shared_mesh(name);
+        let rays = rays_around(&mesh, &mut rng, ray_count);
+        let tris = mesh.triangles::<f64>();
+        let accel = Accel::from_mesh(mt::<f64>(), &mesh);
+        check_invariants(&accel, &tris);
+        let hits = rays.iter().filter(|r| check_ray(&accel, &tris, r)).count();
+        let tris32 = mesh.triangles::<f32>();
+        let accel32 = Accel::from_mesh(mt::<f32>(), &mesh);
+        check_invariants(&accel32, &tris32);
+        let hits32 = rays.iter().filter(|r| check_ray(&accel32, &tris32, &r.cast())).count();
+        assert!(hits > ray_count / 5 && hits32 > ray_count / 5, "{name}: {hits} {hits32}");
+    }
+}
