@@ -1,1 +1,296 @@
-fn main() {}
+//! G3 operations beside their glam counterparts, f32 and f64, on the same machine and inputs.
+//!
+//! Each benchmark maps one operation over a fixed array of `BATCH` random inputs (fixed seed),
+//! reached through `black_box` so that neither side can be constant-folded, and passes every
+//! result through `black_box` so that none is discarded. Both sides pay the same loop and
+//! store overhead; the figure is criterion's mean time per iteration divided by `BATCH`, i.e.
+//! throughput per operation, not latency. `BATCH` inputs fit in L1 for every type.
+//!
+//! After the groups have run, `main` reads criterion's estimates
+//! (`<criterion dir>/<group>/{ga,glam}/new/estimates.json`, the mean's point estimate; see
+//! `wedge_benches::mean_ns`) and writes `results/ga_ops.csv`, one row per operation and
+//! precision, with the target each GA operation is held to: within 1.1x of glam, or under 3 ns
+//! for the full geometric product of two `Multivector<f64>` (glam has no counterpart).
+//!
+//! Run: `cargo bench -p wedge-benches --bench ga_ops`. With `WEDGE_BENCH_QUICK=1` every
+//! benchmark runs for a few milliseconds and the CSV goes to the criterion directory instead
+//! of `results/` (a smoke test, not a measurement).
+
+use std::hint::black_box;
+use std::time::SystemTime;
+
+use criterion::{Criterion, Throughput};
+use ga::g3::{Multivector, Rotor, Vector};
+use glam::{DQuat, DVec3, Quat, Vec3};
+use wedge_benches::{
+    GaOpsRow, SplitMix64, Target, bench_times, cpu_model, criterion_dir, mean_ns, quick_mode,
+    results_dir, write_csv,
+};
+
+/// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
+/// make 32 KiB, the size of L1.
+const BATCH: usize = 256;
+
+/// One comparison: which operation, at which precision, held to what.
+struct Spec {
+    op: &'static str,
+    precision: &'static str,
+    has_glam: bool,
+    target: Target,
+}
+
+impl Spec {
+    fn group(&self) -> String {
+        format!("{}_{}", self.op, self.precision)
+    }
+}
+
+/// Maps `op` over `inputs` once per iteration.
+fn map_batch<I, O>(b: &mut criterion::Bencher<'_>, inputs: &[I], op: impl Fn(&I) -> O) {
+    b.iter(|| {
+        for x in black_box(inputs) {
+            black_box(op(x));
+        }
+    });
+}
+
+/// Benchmarks the GA side and the glam side of `spec` in one criterion group. Both closures
+/// are generic parameters, so each side is monomorphised and inlined alike.
+fn bench_pair<I, O, J, P>(
+    c: &mut Criterion,
+    spec: &Spec,
+    (ga_inputs, ga): (&[I], impl Fn(&I) -> O),
+    (glam_inputs, glam): (&[J], impl Fn(&J) -> P),
+) {
+    let mut group = c.benchmark_group(spec.group());
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function("ga", |b| map_batch(b, ga_inputs, &ga));
+    group.bench_function("glam", |b| map_batch(b, glam_inputs, &glam));
+    group.finish();
+}
+
+/// Benchmarks a GA operation that glam has no counterpart for.
+fn bench_ga<I, O>(c: &mut Criterion, spec: &Spec, (inputs, ga): (&[I], impl Fn(&I) -> O)) {
+    let mut group = c.benchmark_group(spec.group());
+    group.throughput(Throughput::Elements(BATCH as u64));
+    group.bench_function("ga", |b| map_batch(b, inputs, &ga));
+    group.finish();
+}
+
+/// Random inputs in both representations, from the same numbers.
+struct Inputs {
+    vectors32: Vec<(Vector<f32>, Vector<f32>)>,
+    vec3s: Vec<(Vec3, Vec3)>,
+    vectors64: Vec<(Vector<f64>, Vector<f64>)>,
+    dvec3s: Vec<(DVec3, DVec3)>,
+    rotors32: Vec<(Rotor<f32>, Rotor<f32>, Vector<f32>)>,
+    quats: Vec<(Quat, Quat, Vec3)>,
+    rotors64: Vec<(Rotor<f64>, Rotor<f64>, Vector<f64>)>,
+    dquats: Vec<(DQuat, DQuat, DVec3)>,
+    multivectors32: Vec<(Multivector<f32>, Multivector<f32>)>,
+    multivectors64: Vec<(Multivector<f64>, Multivector<f64>)>,
+}
+
+fn unit_rotor(rng: &mut SplitMix64) -> Rotor<f64> {
+    let [s, e12, e23, e31] = rng.array();
+    Rotor::new(s, e12, e23, e31).normalize()
+}
+
+fn inputs() -> Inputs {
+    let mut rng = SplitMix64::new(0x6761_5f6f_7073);
+    let vectors64: Vec<_> = (0..BATCH)
+        .map(|_| (Vector::from_array(rng.array()), Vector::from_array(rng.array())))
+        .collect();
+    let rotors64: Vec<_> = (0..BATCH)
+        .map(|_| (unit_rotor(&mut rng), unit_rotor(&mut rng), Vector::from_array(rng.array())))
+        .collect();
+    let multivectors64: Vec<_> = (0..BATCH)
+        .map(|_| (Multivector::from_array(rng.array()), Multivector::from_array(rng.array())))
+        .collect();
+    let v32 = |v: Vector<f64>| Vector::from_array(v.to_array().map(|x| x as f32));
+    let r32 = |r: Rotor<f64>| Rotor::from_array(r.to_array().map(|x| x as f32));
+    let m32 = |m: Multivector<f64>| Multivector::from_array(m.to_array().map(|x| x as f32));
+    let vectors32: Vec<_> = vectors64.iter().map(|&(a, b)| (v32(a), v32(b))).collect();
+    let rotors32: Vec<_> = rotors64.iter().map(|&(r, s, v)| (r32(r), r32(s), v32(v))).collect();
+    Inputs {
+        vec3s: vectors32.iter().map(|&(a, b)| (Vec3::from(a), Vec3::from(b))).collect(),
+        dvec3s: vectors64.iter().map(|&(a, b)| (DVec3::from(a), DVec3::from(b))).collect(),
+        quats: rotors32
+            .iter()
+            .map(|&(r, s, v)| (Quat::from(r), Quat::from(s), Vec3::from(v)))
+            .collect(),
+        dquats: rotors64
+            .iter()
+            .map(|&(r, s, v)| (DQuat::from(r), DQuat::from(s), DVec3::from(v)))
+            .collect(),
+        multivectors32: multivectors64.iter().map(|&(a, b)| (m32(a), m32(b))).collect(),
+        vectors32,
+        vectors64,
+        rotors32,
+        rotors64,
+        multivectors64,
+    }
+}
+
+/// Registers every benchmark and returns what was measured, for the CSV.
+fn run_all(c: &mut Criterion, x: &Inputs) -> Vec<Spec> {
+    let within = Target::RatioToGlam(1.1);
+    let mut specs = Vec::new();
+    // Each macro call benchmarks one spec and records it for the CSV.
+    macro_rules! pair {
+        ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr, $glam_inputs:expr, $glam:expr) => {{
+            let spec = Spec { op: $op, precision: $precision, has_glam: true, target: $target };
+            bench_pair(c, &spec, ($ga_inputs, $ga), ($glam_inputs, $glam));
+            specs.push(spec);
+        }};
+    }
+    macro_rules! single {
+        ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr) => {{
+            let spec = Spec { op: $op, precision: $precision, has_glam: false, target: $target };
+            bench_ga(c, &spec, ($ga_inputs, $ga));
+            specs.push(spec);
+        }};
+    }
+
+    pair!("outer_vs_cross", "f32", within, &x.vectors32, |&(a, b)| a ^ b, &x.vec3s, |&(a, b)| a
+        .cross(b));
+    pair!("outer_vs_cross", "f64", within, &x.vectors64, |&(a, b)| a ^ b, &x.dvec3s, |&(a, b)| a
+        .cross(b));
+    pair!("inner_vs_dot", "f32", within, &x.vectors32, |&(a, b)| a | b, &x.vec3s, |&(a, b)| a
+        .dot(b));
+    pair!("inner_vs_dot", "f64", within, &x.vectors64, |&(a, b)| a | b, &x.dvec3s, |&(a, b)| a
+        .dot(b));
+    pair!(
+        "rotate_vs_quat_mul_vec3",
+        "f32",
+        within,
+        &x.rotors32,
+        |&(r, _, v)| r.rotate(v),
+        &x.quats,
+        |&(q, _, v)| q * v
+    );
+    pair!(
+        "rotate_vs_quat_mul_vec3",
+        "f64",
+        within,
+        &x.rotors64,
+        |&(r, _, v)| r.rotate(v),
+        &x.dquats,
+        |&(q, _, v)| q * v
+    );
+    pair!(
+        "rotor_mul_vs_quat_mul",
+        "f32",
+        within,
+        &x.rotors32,
+        |&(r, s, _)| r * s,
+        &x.quats,
+        |&(q, p, _)| q * p
+    );
+    pair!(
+        "rotor_mul_vs_quat_mul",
+        "f64",
+        within,
+        &x.rotors64,
+        |&(r, s, _)| r * s,
+        &x.dquats,
+        |&(q, p, _)| q * p
+    );
+    // glam's Quat::inverse is the conjugate (it assumes a unit quaternion); the like-for-like GA
+    // operation is the reverse. Rotor::inverse also divides by the squared norm and checks it.
+    pair!(
+        "rotor_reverse_vs_quat_inverse",
+        "f32",
+        within,
+        &x.rotors32,
+        |&(r, _, _)| r.reverse(),
+        &x.quats,
+        |&(q, _, _)| q.inverse()
+    );
+    pair!(
+        "rotor_reverse_vs_quat_inverse",
+        "f64",
+        within,
+        &x.rotors64,
+        |&(r, _, _)| r.reverse(),
+        &x.dquats,
+        |&(q, _, _)| q.inverse()
+    );
+    pair!(
+        "rotor_inverse_vs_quat_inverse",
+        "f32",
+        within,
+        &x.rotors32,
+        |&(r, _, _)| r.inverse(),
+        &x.quats,
+        |&(q, _, _)| q.inverse()
+    );
+    pair!(
+        "rotor_inverse_vs_quat_inverse",
+        "f64",
+        within,
+        &x.rotors64,
+        |&(r, _, _)| r.inverse(),
+        &x.dquats,
+        |&(q, _, _)| q.inverse()
+    );
+    single!("multivector_geometric_product", "f32", Target::None, &x.multivectors32, |&(a, b)| a
+        * b);
+    single!("multivector_geometric_product", "f64", Target::MaxNs(3.0), &x.multivectors64, |&(
+        a,
+        b,
+    )| a
+        * b);
+    single!("multivector_inverse", "f32", Target::None, &x.multivectors32, |&(a, _)| a.inverse());
+    single!("multivector_inverse", "f64", Target::None, &x.multivectors64, |&(a, _)| a.inverse());
+    specs
+}
+
+fn main() {
+    let started = SystemTime::now();
+    let (warm_up, measurement) = bench_times();
+    let mut criterion = Criterion::default().warm_up_time(warm_up).measurement_time(measurement);
+    if quick_mode() {
+        criterion = criterion.sample_size(10).nresamples(1000);
+    }
+    let mut criterion = criterion.configure_from_args();
+    let specs = run_all(&mut criterion, &inputs());
+    criterion.final_summary();
+
+    let dir = criterion_dir();
+    let cpu = cpu_model();
+    let per_op = |group: &str, function: &str| {
+        mean_ns(&dir, group, function, started).map(|ns| ns / BATCH as f64)
+    };
+    let rows: Vec<GaOpsRow> = specs
+        .iter()
+        .filter_map(|spec| {
+            let group = spec.group();
+            // A benchmark filtered out of this run has no fresh estimate: no row for it.
+            let ga = per_op(&group, "ga")?;
+            let glam = if spec.has_glam { per_op(&group, "glam") } else { None };
+            Some(GaOpsRow::new(spec.op, spec.precision, Some(ga), glam, spec.target, &cpu))
+        })
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    let path =
+        if quick_mode() { dir.join("ga_ops.quick.csv") } else { results_dir().join("ga_ops.csv") };
+    write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
+    println!("\n{:<32} {:>5} {:>9} {:>9} {:>7}  target", "op", "prec", "ga ns", "glam ns", "ratio");
+    for row in &rows {
+        let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), |x| format!("{x:.3}"));
+        println!(
+            "{:<32} {:>5} {:>9} {:>9} {:>7}  {} {}",
+            row.op,
+            row.precision,
+            show(row.ga_ns),
+            show(row.glam_ns),
+            show(row.ratio_ga_over_glam),
+            row.target,
+            row.meets_target.map_or("", |met| if met { "met" } else { "MISSED" }),
+        );
+    }
+    println!("wrote {}", path.display());
+}

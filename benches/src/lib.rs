@@ -188,3 +188,37 @@ pub fn write_csv<R: Serialize>(path: &Path, rows: &[R]) -> io::Result<()> {
     }
     writer.flush()
 }
+
+/// A tiny deterministic generator (SplitMix64) for bench inputs, so that the benches need no
+/// random-number crate and every run measures the same values.
+#[derive(Clone, Debug)]
+pub struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// A generator from a seed.
+    #[must_use]
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A uniform value in `[low, high)`.
+    pub fn range(&mut self, low: f64, high: f64) -> f64 {
+        // The top 53 bits give every double in [0, 1) with equal spacing.
+        let unit = (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        low + (high - low) * unit
+    }
+
+    /// `N` values uniform in `[-1, 1)`.
+    pub fn array<const N: usize>(&mut self) -> [f64; N] {
+        std::array::from_fn(|_| self.range(-1.0, 1.0))
+    }
+}
