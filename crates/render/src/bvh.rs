@@ -33,6 +33,13 @@
 //! - Zero direction components give infinite inverse components; the `0 * inf = NaN` of a ray
 //!   lying in a box's face plane is ignored by the NaN-skipping `min`/`max`, so that slab
 //!   simply imposes no constraint (conservative).
+//!
+//! What this assumes of a kernel: a reported hit lies within its triangle's box grown by the
+//! padding, and its `t` is within the `gamma(3)` slack of the distance to that point. Kernels
+//! meet this for every triangle of positive area whose hit they compute to a few ulps; a
+//! kernel that reports rounding noise as hits on (nearly) degenerate triangles may see such
+//! hits differ between the BVH and brute force, which is why the
+//! [`Intersector`](intersect::Intersector) contract says degenerate triangles are never hit.
 
 use core::ops::Range;
 
