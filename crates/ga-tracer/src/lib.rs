@@ -1,2 +1,108 @@
-//! ga-tracer (placeholder: being written).
+//! Ray-triangle intersection with geometric algebra: the `ga` back ends of the
+//! [`intersect::Intersector`] seam, built on the [`ga`] crate's G(3,0,0).
+//!
+//! ```
+//! use intersect::{Intersector, Ray, Triangle};
+//! use ga_tracer::{Ga, GaPlucker, GaReport};
+//!
+//! // A triangle in the plane z = 2 and a ray looking up at it from below the origin.
+//! let tri = Triangle::new([0.0, 0.0, 2.0], [4.0, 0.0, 2.0], [0.0, 4.0, 2.0]);
+//! let ray = Ray::new([1.0, 2.0, -1.0], [0.0, 0.0, 1.0]);
+//!
+//! // The report's method as written (errata fixed), everything per ray.
+//! let report = GaReport::<f64>::new();
+//! let hit = report.intersect(&report.prepare(&tri), &ray, &(), f64::INFINITY).unwrap();
+//! assert_eq!((hit.t, hit.u, hit.v), (3.0, 0.25, 0.5));
+//!
+//! // The same mathematics with the per-triangle part precomputed: the same answer.
+//! let ga = Ga::<f64>::new();
+//! let prim = ga.prepare(&tri);
+//! assert_eq!(ga.intersect(&prim, &ray, &(), f64::INFINITY), Some(hit));
+//! // Hits count only within (0, t_max], and a hit exactly at t_max counts.
+//! assert!(ga.occludes(&prim, &ray, &(), 3.0));
+//! assert!(!ga.occludes(&prim, &ray, &(), 2.9));
+//!
+//! // The watertight variant has per-ray data.
+//! let wt = GaPlucker::<f32>::new();
+//! let (tri32, ray32) = (tri.cast::<f32>(), ray.cast::<f32>());
+//! let rd = wt.prepare_ray(&ray32);
+//! let hit = wt.intersect(&wt.prepare(&tri32), &ray32, &rd, f32::INFINITY).unwrap();
+//! assert_eq!((hit.t, hit.u, hit.v), (3.0, 0.25, 0.5));
+//! assert_eq!(<GaPlucker<f32> as Intersector>::NAME, "ga-plucker");
+//! ```
+//!
+//! # The kernels
+//!
+//! All three are generic over the precision ([`GaReal`]: `f32` or `f64`) and implement the
+//! report (T. Chauncey, *An Investigation into Geometric Algebra & its Implementation in a Ray
+//! Tracer*, sections 3.1 to 3.3) with its errata corrected (see [`ga::errata`]: E2, E3, E4,
+//! E7). Each module holds its derivation.
+//!
+//! | | [`GaReport`] (`"ga-report"`) | [`Ga`] (`"ga"`) | [`GaPlucker`] (`"ga-plucker"`) |
+//! |---|---|---|---|
+//! | What it is | the report's steps as written, with [`ga::g3::geometry`]'s `Plane`, `Line` and the report's three edge tests | the same mathematics, per-triangle part precomputed | edge tests as trivectors `((vi - o) ∧ (vj - o)) ∧ u` |
+//! | Shared edges and vertices | not watertight | not watertight | **watertight**: a ray through a shared edge or vertex hits at least one of the triangles, given identical vertex values in both |
+//! | Edges | closed | closed | closed |
+//! | Faces | both | both | both |
+//! | Degenerate triangles | never hit (zero area decided exactly at `prepare`, see [`is_degenerate`]) | never hit (same) | never hit (same) |
+//! | NaN or infinite input | miss, no panic | miss, no panic | miss, no panic |
+//! | Per triangle | 3 vertices: 36 B (`f32`), 72 B (`f64`) | `a`, unit normal `n`, reciprocal frame `m_b`, `m_c`: 48 B, 96 B | 3 vertices: 36 B, 72 B |
+//! | Per ray | nothing | nothing | `u⁻¹` and an error-bound factor |
+//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector (21 operations, fused multiply-adds); one division, for hits only | 9 subtractions, 3 edge trivectors, an error bound (about 75 operations); one division, for hits only |
+//! | Rare slow path | none | none | exact signs (`orient3d`) for values within rounding of 0 |
+//! | `t` measured from | the world origin (loses precision far from it) | vertex `a` (one rounded subtraction `a - o`) | the ray origin |
+//!
+//! Speeds are measured by the criterion benches in `benches/`, not here.
+//!
+//! # Accuracy
+//!
+//! Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`. The tests check `t` to a
+//! relative `1e-5` (`f32`) and `1e-12` (`f64`) against an independent `f64` solver for
+//! well-conditioned rays, and that the hit/miss decision agrees with it except within a thin
+//! band around the edges (measured in the tests). [`Ga`] and [`GaPlucker`] decide on undivided
+//! values and divide once; their barycentrics satisfy `u, v >= 0` and `u + v <= 1` up to the
+//! rounding of that division.
+
 #![deny(missing_docs)]
+
+mod plucker;
+mod precomputed;
+mod real;
+mod report;
+
+pub use plucker::{GaPlucker, PluckerPrim, PluckerRay};
+pub use precomputed::{Ga, GaPrim};
+pub use real::GaReal;
+pub use report::{GaReport, ReportPrim};
+
+use intersect::{Real, Triangle};
+use robust::{Coord, orient2d};
+
+/// Whether a triangle has zero area, decided exactly: its bivector `(b - a) ∧ (c - a)` is
+/// exactly zero.
+///
+/// The bivector's components `e12`, `e23`, `e31` are the signed areas of the triangle's
+/// projections onto the three coordinate planes; each is evaluated with Shewchuk's adaptive
+/// exact predicate (`robust::orient2d`), on coordinates converted to `f64` exactly. So a
+/// triangle with collinear or repeated vertices is degenerate however its coordinates round,
+/// and every other triangle is not (barring underflow of products of coordinate differences
+/// below about `1e-150`). A triangle with a NaN or infinite coordinate is not reported
+/// degenerate; the kernels miss it anyway.
+///
+/// ```
+/// use intersect::{Real, Triangle};
+/// use ga_tracer::is_degenerate;
+///
+/// assert!(is_degenerate(&Triangle::new([0.1, 0.2, 0.3], [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])));
+/// assert!(is_degenerate(&Triangle::new([0.0f32, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0])));
+/// assert!(!is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.5])));
+/// ```
+#[must_use]
+pub fn is_degenerate<T: Real>(tri: &Triangle<T>) -> bool {
+    let [a, b, c] = tri.vertices().map(|p| p.map(Real::to_f64));
+    // (i, j) picks the coordinate plane of e12, e23, e31.
+    [(0, 1), (1, 2), (2, 0)].into_iter().all(|(i, j)| {
+        let project = |p: [f64; 3]| Coord { x: p[i], y: p[j] };
+        orient2d(project(a), project(b), project(c)) == 0.0
+    })
+}

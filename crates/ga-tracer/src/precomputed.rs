@@ -1,0 +1,247 @@
+//! The report's mathematics with the per-triangle work done once, at scene build, and only
+//! grade-specialised types in the kernel.
+//!
+//! # Derivation
+//!
+//! Let `N = (b - a) ∧ (c - a)` be the triangle's bivector (report 3.1, unnormalised: its
+//! magnitude is twice the area) and `p = a + λb (b - a) + λc (c - a)` a point of its plane.
+//!
+//! **The plane (3.1, 3.2).** The plane is `((x - a) ∧ N)* = 0`; for a vector `x`,
+//! `(x ∧ N)* = x · N*`, so with the unit normal `n = N* / |N|` it is `(x - a) · n = 0`. On
+//! the ray `x = o + t u` this gives the report's `t = -((o ∧ B)* - d) / (u ∧ B)*` with the
+//! offset measured from `a` instead of the world origin:
+//!
+//! ```text
+//! s = a - o            the vertex a seen from the ray origin
+//! den = u · n          (u ∧ B)*, the report's denominator
+//! num = s · n          -((o ∧ B)* - d), with d = a · n
+//! t = num / den
+//! ```
+//!
+//! **The edges (3.3).** The report compares the edge bivector `(b - a) ∧ (p - a)` with
+//! `N`. For `p` in the plane it is a multiple of `N`: substituting `p`,
+//! `(b - a) ∧ (p - a) = λc (b - a) ∧ (c - a) = λc N`. So `λc = ((b - a) ∧ (p - a)) | N⁻¹`
+//! (`N⁻¹ = N / (N | N)`, `N | N = -|N|²`), and this is linear in `x = p - a`: for a vector
+//! `e` and a bivector `N`,
+//!
+//! ```text
+//! (e ∧ x) | N = <(e x - e · x) N>₀ = <e x N>₀ = <x N e>₀ = x · <N e>₁ = x · (N | e)
+//! ```
+//!
+//! (the scalar `e · x` times `N` has no scalar part; the scalar part is invariant under cyclic
+//! permutation). Hence `λc = (p - a) · m_c` with the vector `m_c = N⁻¹ | (b - a)`. The same for
+//! the edge from `c` to `a`, whose bivector `(a - c) ∧ (p - c) = λb N` gives
+//! `λb = (p - c) · m_b = (p - a) · m_b` with `m_b = N⁻¹ | (a - c)` (`m_b` is orthogonal to
+//! `a - c`, so the start point does not matter). `m_b`, `m_c` lie in the plane, `m_b` at
+//! right angles to `c - a`, `m_c` to `b - a`: they are the reciprocal frame of
+//! `(b - a, c - a)` (`m_b · (b - a) = 1`, `m_b · (c - a) = 0`, and so on). Each edge test of
+//! the report is now one inner product with the hit point, and its value *is* the barycentric
+//! coordinate; the third edge is `λa = 1 - λb - λc`.
+//!
+//! **Without a division.** The hit point relative to `a`, scaled by `den`, is
+//!
+//! ```text
+//! q = den (p - a) = den (t u - s) = num u - den s       (= -n | (u ∧ s), the normal's inner
+//!                                                          product with the ray's moment about a)
+//! U = q · m_b = den λb      V = q · m_c = den λc        W = den - U - V = den λa
+//! ```
+//!
+//! With `σ = sign(den)`: inside is `σU >= 0`, `σV >= 0`, `σ(U + V) <= |den|` (closed edges),
+//! and `0 < t <= t_max` is `0 < σ num <= t_max |den|`. `σx` is a sign-bit flip, not a
+//! multiply. `den = 0` (ray parallel to the plane, or a degenerate triangle, stored with
+//! `n = 0`) fails the distance test for every `t_max`. Only then does the kernel divide:
+//! `t = num / den`, `u = U / den`, `v = V / den`.
+//!
+//! # Per-triangle data: 12 scalars
+//!
+//! `a`, `n`, `m_b`, `m_c` (48 bytes in `f32`, 96 in `f64`), computed in `f64` and rounded once.
+//! Storing `a` rather than the offsets `a · n`, `a · m_b`, `a · m_c` costs the same per test
+//! (three subtractions `a - o` instead of three additions of offsets) and puts the only
+//! cancellation into one subtraction of nearby points, as Moller-Trumbore and the watertight
+//! kernel do, instead of a difference of distances from the world origin.
+//!
+//! # Cost per test
+//!
+//! 3 subtractions (`s`), 2 inner products (`den`, `num`), the distance test, `q` (3 multiplies,
+//! 3 fused multiply-adds), 2 inner products (`U`, `V`), the edge test; inner products use fused
+//! multiply-adds (1 multiply, 2 FMAs each). 21 arithmetic operations in all, 12 before the first
+//! branch. One division, only for a hit.
+//!
+//! # Not watertight
+//!
+//! `U`, `V` are computed from each triangle's own `a`, `m_b`, `m_c`, so two triangles sharing
+//! an edge round differently: a ray through the edge can pass between them. See
+//! [`crate::GaPlucker`] for a kernel that cannot.
+
+use core::marker::PhantomData;
+
+use ga::g3::Vector;
+use intersect::{Intersector, Ray, Triangle, TriangleHit};
+
+use crate::real::private::Float;
+use crate::{GaReal, is_degenerate};
+
+/// The report's mathematics with per-triangle precomputation (`NAME = "ga"`): the fast GA
+/// kernel.
+///
+/// See the [module derivation](self) and the [crate table](crate#the-kernels).
+///
+/// ```
+/// use intersect::{Intersector, Ray, Triangle};
+/// use ga_tracer::Ga;
+///
+/// let k = Ga::<f32>::new();
+/// let prim = k.prepare(&Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]));
+/// let ray = Ray::new([0.5, 1.0, 3.0], [0.0, 0.0, -1.0]);
+/// let hit = k.intersect(&prim, &ray, &(), f32::INFINITY).unwrap();
+/// assert_eq!((hit.t, hit.u, hit.v), (3.0, 0.25, 0.5));
+/// // Only within (0, t_max]: the triangle is 3 units away.
+/// assert!(k.intersect(&prim, &ray, &(), 2.5).is_none());
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Ga<T>(PhantomData<T>);
+
+impl<T> Ga<T> {
+    /// The kernel (it has no state).
+    #[must_use]
+    pub const fn new() -> Self {
+        Self(PhantomData)
+    }
+}
+
+/// What [`Ga`] keeps of a triangle (12 scalars): the vertex `a`, the unit normal
+/// `n = N* / |N|`, and the reciprocal frame `m_b = N⁻¹ | (a - c)`, `m_c = N⁻¹ | (b - a)`, whose
+/// inner products with `p - a` are the barycentric weights of `b` and `c`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GaPrim<T> {
+    a: Vector<T>,
+    n: Vector<T>,
+    m_b: Vector<T>,
+    m_c: Vector<T>,
+}
+
+impl<T: GaReal> GaPrim<T> {
+    /// The data of triangle `tri`, computed in `f64` and rounded once to `T`.
+    ///
+    /// A degenerate triangle (see [`is_degenerate`]) gets `n = m_b = m_c = 0`, which no ray
+    /// hits. Non-finite vertices give non-finite data, which no ray hits either.
+    #[must_use]
+    #[allow(clippy::eq_op, reason = "N | N, a bivector's inner product with itself, is meant")]
+    pub fn new(tri: &Triangle<T>) -> Self {
+        let a = Vector::from_array(tri.a);
+        if is_degenerate(tri) {
+            return Self { a, n: Vector::ZERO, m_b: Vector::ZERO, m_c: Vector::ZERO };
+        }
+        let [a64, b64, c64] = tri.vertices().map(|p| Vector::from_array(p.map(to_f64)));
+        let bivector = (b64 - a64) ^ (c64 - a64);
+        // N⁻¹ = N / (N | N); for a blade N N = N | N = -|N|².
+        let inverse = bivector * (bivector | bivector).recip();
+        let n = bivector.dual() * bivector.norm().recip();
+        let m_b = inverse | (a64 - c64);
+        let m_c = inverse | (b64 - a64);
+        let round = |v: Vector<f64>| Vector::from_array(v.to_array().map(ga::Scalar::from_f64));
+        Self { a, n: round(n), m_b: round(m_b), m_c: round(m_c) }
+    }
+}
+
+fn to_f64<T: GaReal>(x: T) -> f64 {
+    ga::Scalar::to_f64(x)
+}
+
+impl<T: GaReal> Intersector for Ga<T> {
+    type Real = T;
+    type Prim = GaPrim<T>;
+    type RayData = ();
+    const NAME: &'static str = "ga";
+
+    fn prepare(&self, tri: &Triangle<T>) -> GaPrim<T> {
+        GaPrim::new(tri)
+    }
+
+    #[inline(always)]
+    fn prepare_ray(&self, _ray: &Ray<T>) {}
+
+    #[inline(always)]
+    fn intersect(
+        &self,
+        prim: &GaPrim<T>,
+        ray: &Ray<T>,
+        _: &(),
+        t_max: T,
+    ) -> Option<TriangleHit<T>> {
+        intersect(prim, ray, t_max)
+    }
+
+    #[inline(always)]
+    fn occludes(&self, prim: &GaPrim<T>, ray: &Ray<T>, _: &(), t_max: T) -> bool {
+        occludes(prim, ray, t_max)
+    }
+}
+
+#[inline(always)]
+fn intersect<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> Option<TriangleHit<T>> {
+    let c = candidate(prim, ray, t_max)?;
+    let inv_den = T::ONE / c.den;
+    let t = c.num * inv_den;
+    hit_distance_ok(t, t_max).then(|| TriangleHit { t, u: c.u * inv_den, v: c.v * inv_den })
+}
+
+/// The same test and the same rounded `t` as [`intersect`], without the barycentrics.
+#[inline(always)]
+fn occludes<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> bool {
+    candidate(prim, ray, t_max).is_some_and(|c| hit_distance_ok(c.num * (T::ONE / c.den), t_max))
+}
+
+/// The undivided hit: `t = num / den`, `u = U / den`, `v = V / den`.
+struct Candidate<T> {
+    num: T,
+    den: T,
+    u: T,
+    v: T,
+}
+
+/// The decision on undivided values (see the module derivation).
+#[inline(always)]
+fn candidate<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> Option<Candidate<T>> {
+    let o = Vector::from_array(ray.origin);
+    let dir = Vector::from_array(ray.dir);
+    let s = prim.a - o;
+    let den = dot(dir, prim.n);
+    let num = dot(s, prim.n);
+
+    // 0 < t <= t_max as 0 < σ num <= t_max |den|, loosened by a few ulps so that it never
+    // rejects a hit whose rounded t is exactly t_max (the final decision is made on the
+    // divided t): then `intersect(.., t_max = hit.t)` finds the same hit.
+    let abs_den = den.abs();
+    let num_s = num.xor_sign(den);
+    let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
+    if !(num_s > T::ZERO && num_s <= t_max * abs_den * slack) {
+        return None;
+    }
+
+    // q = den (p - a) = num u - den s; U = q · m_b, V = q · m_c.
+    let q = Vector::new(
+        num.mul_add(dir.e1, -(den * s.e1)),
+        num.mul_add(dir.e2, -(den * s.e2)),
+        num.mul_add(dir.e3, -(den * s.e3)),
+    );
+    let u = dot(q, prim.m_b);
+    let v = dot(q, prim.m_c);
+    let (u_s, v_s) = (u.xor_sign(den), v.xor_sign(den));
+    if !(u_s >= T::ZERO && v_s >= T::ZERO && u_s + v_s <= abs_den) {
+        return None;
+    }
+    Some(Candidate { num, den, u, v })
+}
+
+/// `0 < t <= t_max` and `t` finite, on the divided `t`.
+#[inline(always)]
+fn hit_distance_ok<T: Float>(t: T, t_max: T) -> bool {
+    t > T::ZERO && t <= t_max && t.is_finite()
+}
+
+/// The inner product `x | y` of two vectors, with fused multiply-adds.
+#[inline(always)]
+fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
+    x.e1.mul_add(y.e1, x.e2.mul_add(y.e2, x.e3 * y.e3))
+}

@@ -1,0 +1,76 @@
+//! The precisions the GA back end supports, and the two bit-level operations its kernels need
+//! beyond [`ga::Scalar`].
+
+/// A precision the GA back end supports: `f32` or `f64`.
+///
+/// The algebra ([`ga::Scalar`]) and the seam ([`intersect::Real`]) each define their own
+/// scalar trait; this one joins them. Sealed: implemented for `f32` and `f64` only.
+pub trait GaReal: private::Float + intersect::Real {}
+
+impl GaReal for f32 {}
+impl GaReal for f64 {}
+
+pub(crate) mod private {
+    /// What the kernels use: [`ga::Scalar`] plus sign manipulation. The kernels are generic
+    /// over this trait alone, so `T::ZERO` and friends name [`ga::Scalar`]'s items without
+    /// ambiguity (`intersect::Real` has items of the same names).
+    pub trait Float: ga::Scalar {
+        /// The smallest positive normal number.
+        const MIN_POSITIVE: Self;
+
+        /// `self`, negated when `sign_of` has its sign bit set: `x * sign(s)` without a
+        /// multiply or a branch (one AND and one XOR of the bit patterns).
+        fn xor_sign(self, sign_of: Self) -> Self;
+
+        /// `x` rounded to this precision, keeping its sign when it is non-zero: a value that
+        /// would round to zero becomes the smallest subnormal of the same sign. The
+        /// watertight kernel's exact fallback needs the sign, not the size.
+        fn from_f64_keep_sign(x: f64) -> Self;
+    }
+
+    macro_rules! impl_float {
+        ($t:ident, $bits:ident) => {
+            impl Float for $t {
+                const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
+
+                #[inline(always)]
+                fn xor_sign(self, sign_of: Self) -> Self {
+                    const SIGN: $bits = 1 << ($bits::BITS - 1);
+                    $t::from_bits(self.to_bits() ^ (sign_of.to_bits() & SIGN))
+                }
+
+                #[inline]
+                fn from_f64_keep_sign(x: f64) -> Self {
+                    let r = x as $t;
+                    if r == 0.0 && x != 0.0 { $t::from_bits(1).copysign(x as $t) } else { r }
+                }
+            }
+        };
+    }
+
+    impl_float!(f32, u32);
+    impl_float!(f64, u64);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::private::Float;
+
+    #[test]
+    fn xor_sign_flips_only_for_negative_signs() {
+        assert_eq!(3.0f32.xor_sign(-2.0), -3.0);
+        assert_eq!(3.0f32.xor_sign(2.0), 3.0);
+        assert_eq!((-3.0f64).xor_sign(-0.5), 3.0);
+        assert_eq!(1.0f64.xor_sign(-0.0), -1.0);
+        assert!(f64::NAN.xor_sign(-1.0).is_nan());
+    }
+
+    #[test]
+    fn keep_sign_never_rounds_a_nonzero_to_zero() {
+        assert_eq!(f32::from_f64_keep_sign(1e-300), f32::from_bits(1));
+        assert_eq!(f32::from_f64_keep_sign(-1e-300), -f32::from_bits(1));
+        assert_eq!(f32::from_f64_keep_sign(0.0), 0.0);
+        assert_eq!(f32::from_f64_keep_sign(0.5), 0.5);
+        assert_eq!(f64::from_f64_keep_sign(-1e-300), -1e-300);
+    }
+}
