@@ -66,9 +66,9 @@ fn objects_groups_and_materials_merge_in_file_order() {
 }
 
 #[test]
-fn relative_indices_crlf_polylines_and_unknown_statements() {
-    let text = "# comment\r\nv 0 0 0\r\nv 2 0 0\r\nv 0 2 0\r\nl 1 2 3\r\ns off\r\n\
-                vt 0 0\r\nf -3 -2 -1\r\nl 1 2\r\n";
+fn relative_indices_crlf_polylines_materials_colours_and_weights() {
+    let text = "# comment\r\nmtllib absent.mtl\r\nv 0 0 0 1 0 0\r\nv 4 0 0 2\r\nv 0 2 0\r\n\
+                l 1 2 3\r\ns off\r\nusemtl absent\r\nvt 0 0\r\nf -3 -2 -1\r\nl 1 2\r\n";
     let mesh = Mesh::from_obj_str(text, "rel.obj").unwrap();
     assert_eq!(mesh.len(), 1);
     let t = mesh.triangle::<f32>(0);

@@ -16,8 +16,9 @@
 //!
 //! # What the loader accepts
 //!
-//! Parsing is done by [`tobj`] (with `f64` coordinates). Polylines (`l`), texture coordinates
-//! and materials are ignored. Face indices may be negative (relative to the vertices read so
+//! Parsing is done by [`tobj`] (with `f64` coordinates). Polylines (`l`), texture coordinates,
+//! vertex colours (`v x y z r g b`) and materials are ignored; a vertex weight
+//! (`v x y z w`) divides the coordinates. Face indices may be negative (relative to the vertices read so
 //! far) and may point to a vertex that appears later in the file. Vertex normals are kept
 //! when every face vertex of the file has one (`v//vn` or `v/vt/vn`).
 //!
@@ -160,10 +161,18 @@ impl Mesh {
             ignore_lines: false,
             ..Default::default()
         };
-        let loaded = tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| {
-            // Materials are not used; do not read .mtl files.
-            Err(tobj::LoadError::GenericFailure)
-        });
+        let parse = |text: &str| {
+            tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| {
+                // Materials are not used; do not read .mtl files.
+                Err(tobj::LoadError::GenericFailure)
+            })
+        };
+        let loaded = match parse(&text) {
+            // tobj fails when some vertices have colours (`v x y z r g b`) and others not;
+            // colours are not used, so drop them and parse again.
+            Err(tobj::LoadError::FaceColorOutOfBounds) => parse(&strip_vertex_colours(&text)),
+            other => other,
+        };
         let models = match loaded {
             Ok((models, _materials)) => models,
             Err(e) => return Err(locate(&text, name, || e.to_string())),
@@ -260,6 +269,21 @@ fn blank_polylines(text: &str) -> Cow<'_, str> {
         }
     }
     Cow::Owned(out)
+}
+
+/// The text with every `v x y z r g b` statement cut to `v x y z`; line numbers unchanged.
+fn strip_vertex_colours(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for line in text.split_inclusive('\n') {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        if words.len() == 7 && words[0] == "v" {
+            out.push_str(&words[..4].join(" "));
+            out.push('\n');
+        } else {
+            out.push_str(line);
+        }
+    }
+    out
 }
 
 /// The error for a text that failed: the first bad line if the check finds one, else a
