@@ -27,10 +27,11 @@
 //!
 //! `right x up' = fwd`: the camera's axes (right, up', forward) are ordered like the world's
 //! (x, y, z). The [origin camera](Camera::origin) looks along +z with +y up, so +x is on the
-//! **right** of the image and +y at the top; the same convention as the report's renderer,
-//! POV-Ray and Direct3D (a "left-handed" view). A right-handed OpenGL-style viewer standing at
-//! the same place and looking the same way would see +x on the left, that is, this image
-//! flipped left to right. Concretely: a mesh vertex at `(1, 0, 5)` appears right of the centre
+//! **right** of the image and +y at the top, as in POV-Ray and Direct3D (a "left-handed"
+//! view). A right-handed, OpenGL-style viewer standing at the same place and looking the same
+//! way would see +x on the left, that is, this image flipped left to right. Looking along -z
+//! (from the +z side, where modelling tools show a model's front), +x is on the left of the
+//! image. Concretely: a mesh vertex at `(1, 0, 5)` appears right of the centre
 //! of the origin camera's image, and one at `(0, 1, 5)` above it.
 
 use intersect::{Ray, Real};
