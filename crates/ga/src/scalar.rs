@@ -3,13 +3,27 @@
 use core::fmt::{Debug, Display};
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
+/// Per-precision kernels, in a private module so that [`Scalar`] cannot be implemented outside
+/// this crate (it stays `f32` and `f64`) and the hooks stay out of its public docs.
+mod sealed {
+    pub trait Kernels: Sized {
+        /// The geometric product of two multivectors, coefficients in storage order.
+        fn geometric_product(a: &[Self; 8], b: &[Self; 8]) -> [Self; 8];
+        /// The product of two rotors `[s, e12, e23, e31]`.
+        fn rotor_product(a: [Self; 4], b: [Self; 4]) -> [Self; 4];
+        /// The reverse `[s, -e12, -e23, -e31]` of a rotor.
+        fn rotor_reverse(a: [Self; 4]) -> [Self; 4];
+    }
+}
+
 /// A floating-point scalar: implemented for `f32` and `f64`, and only for them.
 ///
 /// Every type in [`crate::g3`] is generic over this trait so that one implementation serves both
 /// precisions. It holds only what the algebra needs (constants, a few elementary functions and
 /// conversions); it is not a general numeric tower.
 pub trait Scalar:
-    Copy
+    sealed::Kernels
+    + Copy
     + Default
     + PartialEq
     + PartialOrd
@@ -172,6 +186,65 @@ macro_rules! impl_scalar {
 
 impl_scalar!(f32);
 impl_scalar!(f64);
+
+/// Whether the SIMD kernels of `g3::simd` are compiled in.
+macro_rules! with_simd {
+    ($simd:expr, $portable:expr) => {{
+        #[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+        {
+            $simd
+        }
+        #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma")))]
+        {
+            $portable
+        }
+    }};
+}
+
+impl sealed::Kernels for f32 {
+    #[inline]
+    fn geometric_product(a: &[f32; 8], b: &[f32; 8]) -> [f32; 8] {
+        with_simd!(crate::g3::simd::geometric_f32(a, b), portable_geometric(a, b))
+    }
+    #[inline]
+    fn rotor_product(a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
+        with_simd!(crate::g3::simd::rotor_product_f32(a, b), portable_rotor_product(a, b))
+    }
+    #[inline]
+    fn rotor_reverse(a: [f32; 4]) -> [f32; 4] {
+        with_simd!(crate::g3::simd::rotor_reverse_f32(a), [a[0], -a[1], -a[2], -a[3]])
+    }
+}
+
+impl sealed::Kernels for f64 {
+    #[inline]
+    fn geometric_product(a: &[f64; 8], b: &[f64; 8]) -> [f64; 8] {
+        with_simd!(crate::g3::simd::geometric_f64(a, b), portable_geometric(a, b))
+    }
+    #[inline]
+    fn rotor_product(a: [f64; 4], b: [f64; 4]) -> [f64; 4] {
+        // The portable form already vectorises well for f64 (glam's DQuat is scalar code).
+        portable_rotor_product(a, b)
+    }
+    #[inline]
+    fn rotor_reverse(a: [f64; 4]) -> [f64; 4] {
+        [a[0], -a[1], -a[2], -a[3]]
+    }
+}
+
+#[inline]
+fn portable_rotor_product<T: Scalar>(a: [T; 4], b: [T; 4]) -> [T; 4] {
+    use crate::g3::Rotor;
+    crate::g3::geometric::rotor_product_portable(Rotor::from_array(a), Rotor::from_array(b))
+        .to_array()
+}
+
+#[allow(dead_code)] // unused when every precision has a SIMD kernel
+#[inline]
+fn portable_geometric<T: Scalar>(a: &[T; 8], b: &[T; 8]) -> [T; 8] {
+    use crate::g3::Multivector;
+    crate::g3::geometric::geometric_portable(Multivector { c: *a }, Multivector { c: *b }).c
+}
 
 #[cfg(test)]
 mod tests {

@@ -1,7 +1,7 @@
 //! [`Bivector`]: grade 2, `e12 e12 + e23 e23 + e31 e31`.
 
 use crate::Scalar;
-use crate::g3::linear::impl_linear;
+use crate::g3::linear::impl_fields;
 use crate::g3::{Rotor, Vector};
 
 /// A bivector (grade 2), an oriented plane element: `e12·e12 + e23·e23 + e31·e31`.
@@ -19,7 +19,7 @@ pub struct Bivector<T> {
     pub e31: T,
 }
 
-impl_linear!(Bivector { e12: "e12", e23: "e23", e31: "e31" });
+impl_fields!(Bivector { e12: "e12", e23: "e23", e31: "e31" });
 
 impl<T: Scalar> Bivector<T> {
     /// The zero bivector.
@@ -81,13 +81,14 @@ impl<T: Scalar> Bivector<T> {
         (r.is_finite() && r > T::ZERO).then(|| self * r)
     }
 
-    /// `B⁻¹ = -B / |B|²` (a bivector squares to `-|B|²`), or `None` for the zero bivector or a
-    /// non-finite result.
+    /// `B⁻¹ = -B / |B|²` (a bivector squares to `-|B|²`), or `None` when `|B|²` is zero or
+    /// not finite.
     #[must_use]
     #[inline]
     pub fn inverse(self) -> Option<Self> {
-        let r = self.norm_squared().recip();
-        (r.is_finite() && r > T::ZERO).then(|| self * -r)
+        // Finite whenever 0 < |B|² < ∞, as for `Vector::inverse`.
+        let n2 = self.norm_squared();
+        (n2 > T::ZERO && n2 < T::INFINITY).then_some(-self / n2)
     }
 
     /// The reverse `B̃ = -B` (`e2 e1 = -e1 e2`).

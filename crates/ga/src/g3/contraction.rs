@@ -15,20 +15,20 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn left_contraction(self, b: Self) -> Self {
         let a = self;
-        Self {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-                - a.e12 * b.e12
-                - a.e23 * b.e23
-                - a.e31 * b.e31
-                - a.e123 * b.e123,
-            e1: a.s * b.e1 - a.e2 * b.e12 + a.e3 * b.e31 - a.e23 * b.e123,
-            e2: a.s * b.e2 + a.e1 * b.e12 - a.e3 * b.e23 - a.e31 * b.e123,
-            e3: a.s * b.e3 - a.e1 * b.e31 + a.e2 * b.e23 - a.e12 * b.e123,
-            e12: a.s * b.e12 + a.e3 * b.e123,
-            e23: a.s * b.e23 + a.e1 * b.e123,
-            e31: a.s * b.e31 + a.e2 * b.e123,
-            e123: a.s * b.e123,
-        }
+        Multivector::new(
+            a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
+                - a.e12() * b.e12()
+                - a.e23() * b.e23()
+                - a.e31() * b.e31()
+                - a.e123() * b.e123(),
+            a.s() * b.e1() - a.e2() * b.e12() + a.e3() * b.e31() - a.e23() * b.e123(),
+            a.s() * b.e2() + a.e1() * b.e12() - a.e3() * b.e23() - a.e31() * b.e123(),
+            a.s() * b.e3() - a.e1() * b.e31() + a.e2() * b.e23() - a.e12() * b.e123(),
+            a.s() * b.e12() + a.e3() * b.e123(),
+            a.s() * b.e23() + a.e1() * b.e123(),
+            a.s() * b.e31() + a.e2() * b.e123(),
+            a.s() * b.e123(),
+        )
     }
 
     /// The right contraction `a ⌊ b`: for an `r`-blade `a` and an `s`-blade `b`, the grade
@@ -37,20 +37,20 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn right_contraction(self, b: Self) -> Self {
         let a = self;
-        Self {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-                - a.e12 * b.e12
-                - a.e23 * b.e23
-                - a.e31 * b.e31
-                - a.e123 * b.e123,
-            e1: a.e1 * b.s + a.e12 * b.e2 - a.e31 * b.e3 - a.e123 * b.e23,
-            e2: a.e2 * b.s - a.e12 * b.e1 + a.e23 * b.e3 - a.e123 * b.e31,
-            e3: a.e3 * b.s - a.e23 * b.e2 + a.e31 * b.e1 - a.e123 * b.e12,
-            e12: a.e12 * b.s + a.e123 * b.e3,
-            e23: a.e23 * b.s + a.e123 * b.e1,
-            e31: a.e31 * b.s + a.e123 * b.e2,
-            e123: a.e123 * b.s,
-        }
+        Multivector::new(
+            a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
+                - a.e12() * b.e12()
+                - a.e23() * b.e23()
+                - a.e31() * b.e31()
+                - a.e123() * b.e123(),
+            a.e1() * b.s() + a.e12() * b.e2() - a.e31() * b.e3() - a.e123() * b.e23(),
+            a.e2() * b.s() - a.e12() * b.e1() + a.e23() * b.e3() - a.e123() * b.e31(),
+            a.e3() * b.s() - a.e23() * b.e2() + a.e31() * b.e1() - a.e123() * b.e12(),
+            a.e12() * b.s() + a.e123() * b.e3(),
+            a.e23() * b.s() + a.e123() * b.e1(),
+            a.e31() * b.s() + a.e123() * b.e2(),
+            a.e123() * b.s(),
+        )
     }
 
     /// The scalar product `⟨a b⟩₀`, the scalar part of the geometric product.
@@ -58,11 +58,11 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn scalar_product(self, b: Self) -> T {
         let a = self;
-        a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-            - a.e12 * b.e12
-            - a.e23 * b.e23
-            - a.e31 * b.e31
-            - a.e123 * b.e123
+        a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
+            - a.e12() * b.e12()
+            - a.e23() * b.e23()
+            - a.e31() * b.e31()
+            - a.e123() * b.e123()
     }
 
     /// The commutator product `a × b = (a b - b a) / 2`: the terms of `a b` whose blades
@@ -71,15 +71,15 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn commutator(self, b: Self) -> Self {
         let a = self;
-        Self {
-            s: T::ZERO,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2 - a.e31 * b.e3,
-            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e12 * b.e1 + a.e23 * b.e3,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: a.e1 * b.e2 - a.e2 * b.e1 - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.e2 * b.e3 - a.e3 * b.e2 + a.e12 * b.e31 - a.e31 * b.e12,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1 - a.e12 * b.e23 + a.e23 * b.e12,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            T::ZERO,
+            -a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2() - a.e31() * b.e3(),
+            a.e1() * b.e12() - a.e3() * b.e23() - a.e12() * b.e1() + a.e23() * b.e3(),
+            -a.e1() * b.e31() + a.e2() * b.e23() - a.e23() * b.e2() + a.e31() * b.e1(),
+            a.e1() * b.e2() - a.e2() * b.e1() - a.e23() * b.e31() + a.e31() * b.e23(),
+            a.e2() * b.e3() - a.e3() * b.e2() + a.e12() * b.e31() - a.e31() * b.e12(),
+            -a.e1() * b.e3() + a.e3() * b.e1() - a.e12() * b.e23() + a.e23() * b.e12(),
+            T::ZERO,
+        )
     }
 }

@@ -55,16 +55,16 @@ impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
         // Blade products: e1 e12 = e2, e1 e23 = e123, e1 e31 = -e3, e2 e12 = -e1, e2 e23 = e3,
         //   e2 e31 = e123, e3 e12 = e123, e3 e23 = -e2, e3 e31 = e1
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31,
-            e2: a.e1 * b.e12 - a.e3 * b.e23,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            T::ZERO,
+            -a.e2 * b.e12 + a.e3 * b.e31,
+            a.e1 * b.e12 - a.e3 * b.e23,
+            -a.e1 * b.e31 + a.e2 * b.e23,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        )
     }
 }
 
@@ -88,16 +88,16 @@ impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
         //   e2 e12 = -e1, e2 e23 = e3, e2 e31 = e123, e3 s = e3, e3 e12 = e123, e3 e23 = -e2,
         //   e3 e31 = e1
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
-            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            T::ZERO,
+            a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
+            a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
+            -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
+        )
     }
 }
 
@@ -108,16 +108,16 @@ impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
-            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
-            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
-            e12: a.e1 * b.e2 - a.e2 * b.e1 + a.e3 * b.e123,
-            e23: a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2,
-            e31: -a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            a.e1 * b.e1() + a.e2 * b.e2() + a.e3 * b.e3(),
+            a.e1 * b.s() - a.e2 * b.e12() + a.e3 * b.e31(),
+            a.e1 * b.e12() + a.e2 * b.s() - a.e3 * b.e23(),
+            -a.e1 * b.e31() + a.e2 * b.e23() + a.e3 * b.s(),
+            a.e1 * b.e2() - a.e2 * b.e1() + a.e3 * b.e123(),
+            a.e1 * b.e123() + a.e2 * b.e3() - a.e3 * b.e2(),
+            -a.e1 * b.e3() + a.e2 * b.e123() + a.e3 * b.e1(),
+            a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
+        )
     }
 }
 
@@ -129,16 +129,16 @@ impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
         // Blade products: e12 e1 = -e2, e12 e2 = e1, e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3,
         //   e23 e3 = e2, e31 e1 = e3, e31 e2 = e123, e31 e3 = -e1
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: a.e12 * b.e2 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3,
-            e3: -a.e23 * b.e2 + a.e31 * b.e1,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            T::ZERO,
+            a.e12 * b.e2 - a.e31 * b.e3,
+            -a.e12 * b.e1 + a.e23 * b.e3,
+            -a.e23 * b.e2 + a.e31 * b.e1,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        )
     }
 }
 
@@ -195,16 +195,16 @@ impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
-            e3: -a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: -a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
+            a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
+            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
+            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            a.e12 * b.s() - a.e23 * b.e31() + a.e31 * b.e23(),
+            a.e12 * b.e31() + a.e23 * b.s() - a.e31 * b.e12(),
+            -a.e12 * b.e23() + a.e23 * b.e12() + a.e31 * b.s(),
+            a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+        )
     }
 }
 
@@ -248,16 +248,16 @@ impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
         // Blade products: e123 s = e123, e123 e12 = -e3, e123 e23 = -e1, e123 e31 = -e2
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: -a.e123 * b.e23,
-            e2: -a.e123 * b.e31,
-            e3: -a.e123 * b.e12,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.e123 * b.s,
-        }
+        Multivector::new(
+            T::ZERO,
+            -a.e123 * b.e23,
+            -a.e123 * b.e31,
+            -a.e123 * b.e12,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e123 * b.s,
+        )
     }
 }
 
@@ -268,16 +268,16 @@ impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e123 * b.e123,
-            e1: -a.e123 * b.e23,
-            e2: -a.e123 * b.e31,
-            e3: -a.e123 * b.e12,
-            e12: a.e123 * b.e3,
-            e23: a.e123 * b.e1,
-            e31: a.e123 * b.e2,
-            e123: a.e123 * b.s,
-        }
+        Multivector::new(
+            -a.e123 * b.e123(),
+            -a.e123 * b.e23(),
+            -a.e123 * b.e31(),
+            -a.e123 * b.e12(),
+            a.e123 * b.e3(),
+            a.e123 * b.e1(),
+            a.e123 * b.e2(),
+            a.e123 * b.s(),
+        )
     }
 }
 
@@ -290,16 +290,16 @@ impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
         //   e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3, e23 e3 = e2, e31 e1 = e3, e31 e2 = e123,
         //   e31 e3 = -e1
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
-            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
-            e3: a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            T::ZERO,
+            a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
+            a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
+            a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
+        )
     }
 }
 
@@ -328,35 +328,16 @@ impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
         // Blade products: s e123 = e123, e12 e123 = -e3, e23 e123 = -e1, e31 e123 = -e2
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: -a.e23 * b.e123,
-            e2: -a.e31 * b.e123,
-            e3: -a.e12 * b.e123,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: a.s * b.e123,
-        }
-    }
-}
-
-/// Geometric product `Rotor * Rotor -> Rotor`.
-impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    #[inline]
-    fn mul(self, b: Rotor<T>) -> Rotor<T> {
-        // Blade products: s s = 1, s e12 = e12, s e23 = e23, s e31 = e31, e12 s = e12,
-        //   e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 s = e23, e23 e12 = e31,
-        //   e23 e23 = -1, e23 e31 = -e12, e31 s = e31, e31 e12 = -e23, e31 e23 = e12,
-        //   e31 e31 = -1
-        let a = self;
-        Rotor {
-            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
-        }
+        Multivector::new(
+            T::ZERO,
+            -a.e23 * b.e123,
+            -a.e31 * b.e123,
+            -a.e12 * b.e123,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.s * b.e123,
+        )
     }
 }
 
@@ -367,16 +348,16 @@ impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: a.s * b.e1 + a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
-            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
-            e3: a.s * b.e3 - a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
-            e123: a.s * b.e123 + a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            a.s * b.s() - a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
+            a.s * b.e1() + a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
+            a.s * b.e2() - a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
+            a.s * b.e3() - a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            a.s * b.e12() + a.e12 * b.s() - a.e23 * b.e31() + a.e31 * b.e23(),
+            a.s * b.e23() + a.e12 * b.e31() + a.e23 * b.s() - a.e31 * b.e12(),
+            a.s * b.e31() - a.e12 * b.e23() + a.e23 * b.e12() + a.e31 * b.s(),
+            a.s * b.e123() + a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+        )
     }
 }
 
@@ -387,16 +368,16 @@ impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
     fn mul(self, b: Vector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
-            e1: a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
-            e2: a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
-            e3: a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: a.e1 * b.e2 - a.e2 * b.e1 + a.e123 * b.e3,
-            e23: a.e2 * b.e3 - a.e3 * b.e2 + a.e123 * b.e1,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1 + a.e123 * b.e2,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            a.e1() * b.e1 + a.e2() * b.e2 + a.e3() * b.e3,
+            a.s() * b.e1 + a.e12() * b.e2 - a.e31() * b.e3,
+            a.s() * b.e2 - a.e12() * b.e1 + a.e23() * b.e3,
+            a.s() * b.e3 - a.e23() * b.e2 + a.e31() * b.e1,
+            a.e1() * b.e2 - a.e2() * b.e1 + a.e123() * b.e3,
+            a.e2() * b.e3 - a.e3() * b.e2 + a.e123() * b.e1,
+            -a.e1() * b.e3 + a.e3() * b.e1 + a.e123() * b.e2,
+            a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
+        )
     }
 }
 
@@ -407,16 +388,16 @@ impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
-            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e123 * b.e31,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e123 * b.e12,
-            e12: a.s * b.e12 - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
+            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
+            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            a.s() * b.e12 - a.e23() * b.e31 + a.e31() * b.e23,
+            a.s() * b.e23 + a.e12() * b.e31 - a.e31() * b.e12,
+            a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12,
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12,
+        )
     }
 }
 
@@ -427,16 +408,16 @@ impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e123 * b.e123,
-            e1: -a.e23 * b.e123,
-            e2: -a.e31 * b.e123,
-            e3: -a.e12 * b.e123,
-            e12: a.e3 * b.e123,
-            e23: a.e1 * b.e123,
-            e31: a.e2 * b.e123,
-            e123: a.s * b.e123,
-        }
+        Multivector::new(
+            -a.e123() * b.e123,
+            -a.e23() * b.e123,
+            -a.e31() * b.e123,
+            -a.e12() * b.e123,
+            a.e3() * b.e123,
+            a.e1() * b.e123,
+            a.e2() * b.e123,
+            a.s() * b.e123,
+        )
     }
 }
 
@@ -447,67 +428,114 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.s - a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
-            e2: a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23 - a.e123 * b.e31,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s - a.e123 * b.e12,
-            e12: a.s * b.e12 + a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.s * b.e23 + a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12 + a.e123 * b.s,
-        }
+        Multivector::new(
+            a.s() * b.s - a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
+            a.e1() * b.s - a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e1() * b.e12 + a.e2() * b.s - a.e3() * b.e23 - a.e123() * b.e31,
+            -a.e1() * b.e31 + a.e2() * b.e23 + a.e3() * b.s - a.e123() * b.e12,
+            a.s() * b.e12 + a.e12() * b.s - a.e23() * b.e31 + a.e31() * b.e23,
+            a.s() * b.e23 + a.e12() * b.e31 + a.e23() * b.s - a.e31() * b.e12,
+            a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12 + a.e31() * b.s,
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12 + a.e123() * b.s,
+        )
     }
 }
 
-/// Geometric product `Multivector * Multivector -> Multivector`.
+// ---- hand-written ----
+
+/// Geometric product `Multivector * Multivector -> Multivector`, all 64 terms of the Cayley
+/// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=native`) it is
+/// the SIMD kernel in [`crate::g3::simd`]; elsewhere [`geometric_portable`].
 impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-                - a.e12 * b.e12
-                - a.e23 * b.e23
-                - a.e31 * b.e31
-                - a.e123 * b.e123,
-            e1: a.s * b.e1 + a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2
-                - a.e23 * b.e123
-                - a.e31 * b.e3
-                - a.e123 * b.e23,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23 - a.e12 * b.e1 + a.e23 * b.e3
-                - a.e31 * b.e123
-                - a.e123 * b.e31,
-            e3: a.s * b.e3 - a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s
-                - a.e12 * b.e123
-                - a.e23 * b.e2
-                + a.e31 * b.e1
-                - a.e123 * b.e12,
-            e12: a.s * b.e12 + a.e1 * b.e2 - a.e2 * b.e1 + a.e3 * b.e123 + a.e12 * b.s
-                - a.e23 * b.e31
-                + a.e31 * b.e23
-                + a.e123 * b.e3,
-            e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2
-                + a.e12 * b.e31
-                + a.e23 * b.s
-                - a.e31 * b.e12
-                + a.e123 * b.e1,
-            e31: a.s * b.e31 - a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1 - a.e12 * b.e23
-                + a.e23 * b.e12
-                + a.e31 * b.s
-                + a.e123 * b.e2,
-            e123: a.s * b.e123
-                + a.e1 * b.e23
-                + a.e2 * b.e31
-                + a.e3 * b.e12
-                + a.e12 * b.e3
-                + a.e23 * b.e1
-                + a.e31 * b.e2
-                + a.e123 * b.s,
-        }
+        Multivector { c: T::geometric_product(&self.c, &b.c) }
     }
+}
+
+/// The geometric product of two multivectors written out term by term (the Cayley table), for
+/// targets without a SIMD kernel and as its check.
+#[inline]
+pub(crate) fn geometric_portable<T: Scalar>(
+    a: Multivector<T>,
+    b: Multivector<T>,
+) -> Multivector<T> {
+    Multivector::new(
+        a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
+            - a.e12() * b.e12()
+            - a.e23() * b.e23()
+            - a.e31() * b.e31()
+            - a.e123() * b.e123(),
+        a.s() * b.e1() + a.e1() * b.s() - a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2()
+            - a.e23() * b.e123()
+            - a.e31() * b.e3()
+            - a.e123() * b.e23(),
+        a.s() * b.e2() + a.e1() * b.e12() + a.e2() * b.s() - a.e3() * b.e23() - a.e12() * b.e1()
+            + a.e23() * b.e3()
+            - a.e31() * b.e123()
+            - a.e123() * b.e31(),
+        a.s() * b.e3() - a.e1() * b.e31() + a.e2() * b.e23() + a.e3() * b.s()
+            - a.e12() * b.e123()
+            - a.e23() * b.e2()
+            + a.e31() * b.e1()
+            - a.e123() * b.e12(),
+        a.s() * b.e12() + a.e1() * b.e2() - a.e2() * b.e1() + a.e3() * b.e123() + a.e12() * b.s()
+            - a.e23() * b.e31()
+            + a.e31() * b.e23()
+            + a.e123() * b.e3(),
+        a.s() * b.e23() + a.e1() * b.e123() + a.e2() * b.e3() - a.e3() * b.e2()
+            + a.e12() * b.e31()
+            + a.e23() * b.s()
+            - a.e31() * b.e12()
+            + a.e123() * b.e1(),
+        a.s() * b.e31() - a.e1() * b.e3() + a.e2() * b.e123() + a.e3() * b.e1() - a.e12() * b.e23()
+            + a.e23() * b.e12()
+            + a.e31() * b.s()
+            + a.e123() * b.e2(),
+        a.s() * b.e123()
+            + a.e1() * b.e23()
+            + a.e2() * b.e31()
+            + a.e3() * b.e12()
+            + a.e12() * b.e3()
+            + a.e23() * b.e1()
+            + a.e31() * b.e2()
+            + a.e123() * b.s(),
+    )
+}
+
+/// Geometric product `Rotor * Rotor -> Rotor`: composition of rotations (`(R2 * R1)` applies
+/// `R1` first). The same 16 products as a quaternion product; for f32 on x86-64 with AVX2 and
+/// FMA it is the SSE kernel in [`crate::g3::simd`], elsewhere [`rotor_product_portable`].
+impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn mul(self, b: Rotor<T>) -> Rotor<T> {
+        Rotor::from_array(T::rotor_product(self.to_array(), b.to_array()))
+    }
+}
+
+/// The rotor product written lane by lane, for targets without a SIMD kernel and as its check.
+#[inline]
+pub(crate) fn rotor_product_portable<T: Scalar>(a: Rotor<T>, b: Rotor<T>) -> Rotor<T> {
+    // a b = Σ_k a_k (e_k b) over a's blades 1, e12, e23, e31, with
+    //   1 b   = [ b.s,    b.e12,  b.e23,  b.e31]
+    //   e12 b = [-b.e12,  b.s,    b.e31, -b.e23]   (e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23)
+    //   e23 b = [-b.e23, -b.e31,  b.s,    b.e12]   (e23 e31 = -e12, e23 e12 = e31)
+    //   e31 b = [-b.e31,  b.e23, -b.e12,  b.s  ]   (e31 e12 = -e23, e31 e23 = e12)
+    // Lanes s, e12, e23, e31 are the blade bitmasks {0, 3, 6, 5}, a group under XOR, so row k
+    // reads b's lanes in the order l XOR k and its signs can ride on the broadcast a_k. Written
+    // lane by lane with one shape, the optimiser turns it into broadcasts, shuffles and FMAs.
+    let (n12, n23, n31) = (-a.e12, -a.e23, -a.e31);
+    let lane = |x: [T; 4], y: [T; 4]| {
+        x[3].mul_add(y[3], x[2].mul_add(y[2], x[1].mul_add(y[1], x[0] * y[0])))
+    };
+    Rotor::new(
+        lane([a.s, n12, n23, n31], [b.s, b.e12, b.e23, b.e31]),
+        lane([a.s, a.e12, n23, a.e31], [b.e12, b.s, b.e31, b.e23]),
+        lane([a.s, a.e12, a.e23, n31], [b.e23, b.e31, b.s, b.e12]),
+        lane([a.s, n12, a.e23, a.e31], [b.e31, b.e23, b.e12, b.s]),
+    )
 }
 
 impl<T: Scalar> MulAssign for Rotor<T> {

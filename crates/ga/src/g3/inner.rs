@@ -132,16 +132,16 @@ impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31,
-            e2: a.e1 * b.e12 - a.e3 * b.e23,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23,
-            e12: a.e3 * b.e123,
-            e23: a.e1 * b.e123,
-            e31: a.e2 * b.e123,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1 * b.e1() + a.e2 * b.e2() + a.e3 * b.e3(),
+            -a.e2 * b.e12() + a.e3 * b.e31(),
+            a.e1 * b.e12() - a.e3 * b.e23(),
+            -a.e1 * b.e31() + a.e2 * b.e23(),
+            a.e3 * b.e123(),
+            a.e1 * b.e123(),
+            a.e2 * b.e123(),
+            T::ZERO,
+        )
     }
 }
 
@@ -152,16 +152,16 @@ impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
-            e3: -a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
+            a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
+            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
+            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -172,16 +172,16 @@ impl<T: Scalar> BitOr<Multivector<T>> for Trivector<T> {
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e123 * b.e123,
-            e1: -a.e123 * b.e23,
-            e2: -a.e123 * b.e31,
-            e3: -a.e123 * b.e12,
-            e12: a.e123 * b.e3,
-            e23: a.e123 * b.e1,
-            e31: a.e123 * b.e2,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e123 * b.e123(),
+            -a.e123 * b.e23(),
+            -a.e123 * b.e31(),
+            -a.e123 * b.e12(),
+            a.e123 * b.e3(),
+            a.e123 * b.e1(),
+            a.e123 * b.e2(),
+            T::ZERO,
+        )
     }
 }
 
@@ -192,16 +192,16 @@ impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: a.e12 * b.e2 - a.e23 * b.e123 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3 - a.e31 * b.e123,
-            e3: -a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
+            a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
+            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
+            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -212,16 +212,16 @@ impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
     fn bitor(self, b: Vector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
-            e1: a.e12 * b.e2 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3,
-            e3: -a.e23 * b.e2 + a.e31 * b.e1,
-            e12: a.e123 * b.e3,
-            e23: a.e123 * b.e1,
-            e31: a.e123 * b.e2,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1() * b.e1 + a.e2() * b.e2 + a.e3() * b.e3,
+            a.e12() * b.e2 - a.e31() * b.e3,
+            -a.e12() * b.e1 + a.e23() * b.e3,
+            -a.e23() * b.e2 + a.e31() * b.e1,
+            a.e123() * b.e3,
+            a.e123() * b.e1,
+            a.e123() * b.e2,
+            T::ZERO,
+        )
     }
 }
 
@@ -232,16 +232,16 @@ impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
     fn bitor(self, b: Bivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
-            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e123 * b.e31,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e123 * b.e12,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
+            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
+            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -252,16 +252,16 @@ impl<T: Scalar> BitOr<Trivector<T>> for Multivector<T> {
     fn bitor(self, b: Trivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e123 * b.e123,
-            e1: -a.e23 * b.e123,
-            e2: -a.e31 * b.e123,
-            e3: -a.e12 * b.e123,
-            e12: a.e3 * b.e123,
-            e23: a.e1 * b.e123,
-            e31: a.e2 * b.e123,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e123() * b.e123,
+            -a.e23() * b.e123,
+            -a.e31() * b.e123,
+            -a.e12() * b.e123,
+            a.e3() * b.e123,
+            a.e1() * b.e123,
+            a.e2() * b.e123,
+            T::ZERO,
+        )
     }
 }
 
@@ -272,16 +272,16 @@ impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
     fn bitor(self, b: Rotor<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31 - a.e123 * b.e23,
-            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e123 * b.e31,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e123 * b.e12,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
+            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
+            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -292,25 +292,26 @@ impl<T: Scalar> BitOr<Multivector<T>> for Multivector<T> {
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-                - a.e12 * b.e12
-                - a.e23 * b.e23
-                - a.e31 * b.e31
-                - a.e123 * b.e123,
-            e1: -a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2
-                - a.e23 * b.e123
-                - a.e31 * b.e3
-                - a.e123 * b.e23,
-            e2: a.e1 * b.e12 - a.e3 * b.e23 - a.e12 * b.e1 + a.e23 * b.e3
-                - a.e31 * b.e123
-                - a.e123 * b.e31,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23 - a.e12 * b.e123 - a.e23 * b.e2 + a.e31 * b.e1
-                - a.e123 * b.e12,
-            e12: a.e3 * b.e123 + a.e123 * b.e3,
-            e23: a.e1 * b.e123 + a.e123 * b.e1,
-            e31: a.e2 * b.e123 + a.e123 * b.e2,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
+                - a.e12() * b.e12()
+                - a.e23() * b.e23()
+                - a.e31() * b.e31()
+                - a.e123() * b.e123(),
+            -a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2()
+                - a.e23() * b.e123()
+                - a.e31() * b.e3()
+                - a.e123() * b.e23(),
+            a.e1() * b.e12() - a.e3() * b.e23() - a.e12() * b.e1() + a.e23() * b.e3()
+                - a.e31() * b.e123()
+                - a.e123() * b.e31(),
+            -a.e1() * b.e31() + a.e2() * b.e23() - a.e12() * b.e123() - a.e23() * b.e2()
+                + a.e31() * b.e1()
+                - a.e123() * b.e12(),
+            a.e3() * b.e123() + a.e123() * b.e3(),
+            a.e1() * b.e123() + a.e123() * b.e1(),
+            a.e2() * b.e123() + a.e123() * b.e2(),
+            T::ZERO,
+        )
     }
 }

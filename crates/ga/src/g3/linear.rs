@@ -15,10 +15,10 @@ use crate::Scalar;
 /// any, applies to each coefficient (`{:.2}`).
 pub(crate) fn write_terms<T: Scalar>(
     f: &mut fmt::Formatter<'_>,
-    terms: &[(T, &str)],
+    terms: impl IntoIterator<Item = (T, &'static str)>,
 ) -> fmt::Result {
     let mut first = true;
-    for &(c, blade) in terms {
+    for (c, blade) in terms {
         // NaN is not zero, so it is printed rather than silently dropped.
         if c == T::ZERO {
             continue;
@@ -43,46 +43,70 @@ pub(crate) fn write_terms<T: Scalar>(
     Ok(())
 }
 
-/// Implements the component-wise operations for a struct of named scalar fields:
-/// `Add`, `Sub`, `Neg`, `Mul<T>`, `Div<T>`, their assigning forms, `scalar * value` for `f32`
-/// and `f64`, `Display` (report style) and the helpers `abs_diff_eq`, `is_finite`, `max_abs`.
-macro_rules! impl_linear {
+/// Gives a struct of named scalar fields the component helpers `map`, `zip` and `terms`
+/// (report-order coefficients with blade names), then the operations of [`impl_linear`].
+macro_rules! impl_fields {
     ($ty:ident { $($field:ident : $blade:literal),+ }) => {
+        impl<T: $crate::Scalar> $ty<T> {
+            /// Applies `f` to every component.
+            #[inline(always)]
+            pub(crate) fn map(self, f: impl Fn(T) -> T) -> Self {
+                Self { $($field: f(self.$field)),+ }
+            }
+            /// Combines corresponding components with `f`.
+            #[inline(always)]
+            pub(crate) fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
+                Self { $($field: f(self.$field, other.$field)),+ }
+            }
+            /// The components with their blade names, in the report's order.
+            #[inline(always)]
+            pub(crate) fn terms(self) -> impl IntoIterator<Item = (T, &'static str)> {
+                [$((self.$field, $blade)),+]
+            }
+        }
+        $crate::g3::linear::impl_linear!($ty);
+    };
+}
+
+/// Implements the component-wise operations for a type with the helpers `map`, `zip` and
+/// `terms`: `Add`, `Sub`, `Neg`, `Mul<T>`, `Div<T>`, their assigning forms, `scalar * value`
+/// for `f32` and `f64`, `Display` (report style) and `abs_diff_eq`, `is_finite`, `max_abs`.
+macro_rules! impl_linear {
+    ($ty:ident) => {
         impl<T: $crate::Scalar> core::ops::Add for $ty<T> {
             type Output = Self;
             #[inline]
             fn add(self, rhs: Self) -> Self {
-                Self { $($field: self.$field + rhs.$field),+ }
+                self.zip(rhs, |a, b| a + b)
             }
         }
         impl<T: $crate::Scalar> core::ops::Sub for $ty<T> {
             type Output = Self;
             #[inline]
             fn sub(self, rhs: Self) -> Self {
-                Self { $($field: self.$field - rhs.$field),+ }
+                self.zip(rhs, |a, b| a - b)
             }
         }
         impl<T: $crate::Scalar> core::ops::Neg for $ty<T> {
             type Output = Self;
             #[inline]
             fn neg(self) -> Self {
-                Self { $($field: -self.$field),+ }
+                self.map(|a| -a)
             }
         }
         impl<T: $crate::Scalar> core::ops::Mul<T> for $ty<T> {
             type Output = Self;
             #[inline]
             fn mul(self, rhs: T) -> Self {
-                Self { $($field: self.$field * rhs),+ }
+                self.map(|a| a * rhs)
             }
         }
         impl<T: $crate::Scalar> core::ops::Div<T> for $ty<T> {
             type Output = Self;
-            /// Divides every component by `rhs` (one reciprocal, then multiplies).
+            /// Divides every component by `rhs` (correctly rounded, like glam's).
             #[inline]
-            #[allow(clippy::suspicious_arithmetic_impl)]
             fn div(self, rhs: T) -> Self {
-                self * rhs.recip()
+                self.map(|a| a / rhs)
             }
         }
         impl<T: $crate::Scalar> core::ops::AddAssign for $ty<T> {
@@ -125,7 +149,7 @@ macro_rules! impl_linear {
         }
         impl<T: $crate::Scalar> core::fmt::Display for $ty<T> {
             fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-                $crate::g3::linear::write_terms(f, &[$((self.$field, $blade)),+])
+                $crate::g3::linear::write_terms(f, self.terms())
             }
         }
         impl<T: $crate::Scalar> $ty<T> {
@@ -133,24 +157,25 @@ macro_rules! impl_linear {
             #[must_use]
             #[inline]
             pub fn abs_diff_eq(self, other: Self, eps: T) -> bool {
-                true $(&& (self.$field - other.$field).abs() <= eps)+
+                self.terms()
+                    .into_iter()
+                    .zip(other.terms())
+                    .all(|((a, _), (b, _))| (a - b).abs() <= eps)
             }
             /// Whether every component is finite (neither infinite nor NaN).
             #[must_use]
             #[inline]
             pub fn is_finite(self) -> bool {
-                true $(&& self.$field.is_finite())+
+                self.terms().into_iter().all(|(a, _)| a.is_finite())
             }
             /// The largest absolute value among the components.
             #[must_use]
             #[inline]
             pub fn max_abs(self) -> T {
-                let mut m = T::ZERO;
-                $(m = m.max(self.$field.abs());)+
-                m
+                self.terms().into_iter().fold(T::ZERO, |m, (a, _)| m.max(a.abs()))
             }
         }
     };
 }
 
-pub(crate) use impl_linear;
+pub(crate) use {impl_fields, impl_linear};

@@ -25,6 +25,8 @@ mod multivector;
 pub mod outer;
 pub mod regressive;
 mod rotor;
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+pub(crate) mod simd;
 mod trivector;
 mod vector;
 

@@ -10,39 +10,67 @@ use crate::g3::{Bivector, Rotor, Trivector, Vector};
 /// Every product is defined for it, so it is the type to fall back on (and the one tests compare
 /// against). The grade types ([`Vector`], [`Bivector`], [`Trivector`], [`Rotor`]) are smaller
 /// and faster where the grades are known.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-#[repr(C)]
+///
+/// The coefficients are reached through [`from_array`](Multivector::from_array),
+/// [`to_array`](Multivector::to_array) and the accessors ([`s`](Multivector::s),
+/// [`e1`](Multivector::e1), ...), all in the report's order. The storage order is private: it
+/// is `1, e1, e2, e12, e3, e31, e23, e123`, which puts the even and odd halves of the geometric
+/// product's permutations in matching SIMD lanes (see [`crate::g3::geometric`]), and the type
+/// is 32-byte aligned so that a vector load never straddles a cache line.
+#[derive(Clone, Copy, Default, PartialEq)]
+#[repr(C, align(32))]
 pub struct Multivector<T> {
-    pub(crate) s: T,
-    pub(crate) e1: T,
-    pub(crate) e2: T,
-    pub(crate) e3: T,
-    pub(crate) e12: T,
-    pub(crate) e23: T,
-    pub(crate) e31: T,
-    pub(crate) e123: T,
+    /// Coefficients in storage order ([`SLOT`] maps report order to it).
+    pub(crate) c: [T; 8],
 }
 
-impl_linear!(Multivector {
-    s: "",
-    e1: "e1",
-    e2: "e2",
-    e3: "e3",
-    e12: "e12",
-    e23: "e23",
-    e31: "e31",
-    e123: "e123"
-});
+/// The storage slot of each coefficient of the report's order.
+pub(crate) const SLOT: [usize; 8] = [0, 1, 2, 4, 3, 6, 5, 7];
 
-/// The basis blade names in the report's order, as printed by `Display`.
+impl<T: Scalar> Multivector<T> {
+    /// Applies `f` to every component.
+    #[inline(always)]
+    pub(crate) fn map(self, f: impl Fn(T) -> T) -> Self {
+        Self { c: self.c.map(f) }
+    }
+    /// Combines corresponding components with `f`.
+    #[inline(always)]
+    pub(crate) fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
+        Self { c: core::array::from_fn(|k| f(self.c[k], other.c[k])) }
+    }
+    /// The components with their blade names, in the report's order.
+    #[inline(always)]
+    pub(crate) fn terms(self) -> impl IntoIterator<Item = (T, &'static str)> {
+        let a = self.to_array();
+        core::array::from_fn::<_, 8, _>(|k| (a[k], DISPLAY[k]))
+    }
+}
+
+impl_linear!(Multivector);
+
+impl<T: Scalar> core::fmt::Debug for Multivector<T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let a = self.to_array();
+        let mut d = f.debug_struct("Multivector");
+        for (name, x) in ["s", "e1", "e2", "e3", "e12", "e23", "e31", "e123"].into_iter().zip(a) {
+            d.field(name, &x);
+        }
+        d.finish()
+    }
+}
+
+/// The basis blade names in the report's order.
 pub const BASIS: [&str; 8] = ["1", "e1", "e2", "e3", "e12", "e23", "e31", "e123"];
+
+/// The suffix `Display` writes after each coefficient (none for the scalar).
+const DISPLAY: [&str; 8] = ["", "e1", "e2", "e3", "e12", "e23", "e31", "e123"];
 
 /// The grade of each basis blade, in the report's order.
 pub const GRADES: [usize; 8] = [0, 1, 1, 1, 2, 2, 2, 3];
 
 impl<T: Scalar> Multivector<T> {
     /// Zero.
-    pub const ZERO: Self = Self::new_const([T::ZERO; 8]);
+    pub const ZERO: Self = Self { c: [T::ZERO; 8] };
     /// The scalar 1.
     pub const ONE: Self = Self::basis(0);
     /// The basis vector `e1`.
@@ -60,10 +88,6 @@ impl<T: Scalar> Multivector<T> {
     /// The unit pseudoscalar `I = e123 = e1 e2 e3`.
     pub const E123: Self = Self::basis(7);
 
-    const fn new_const(a: [T; 8]) -> Self {
-        Self { s: a[0], e1: a[1], e2: a[2], e3: a[3], e12: a[4], e23: a[5], e31: a[6], e123: a[7] }
-    }
-
     /// The `k`-th basis blade of the report's order `1, e1, e2, e3, e12, e23, e31, e123`.
     ///
     /// # Panics
@@ -72,9 +96,9 @@ impl<T: Scalar> Multivector<T> {
     #[must_use]
     pub const fn basis(k: usize) -> Self {
         assert!(k < 8, "G3 has 8 basis blades");
-        let mut a = [T::ZERO; 8];
-        a[k] = T::ONE;
-        Self::new_const(a)
+        let mut c = [T::ZERO; 8];
+        c[SLOT[k]] = T::ONE;
+        Self { c }
     }
 
     /// From all eight coefficients, in the report's order.
@@ -82,110 +106,111 @@ impl<T: Scalar> Multivector<T> {
     #[must_use]
     #[inline]
     pub const fn new(s: T, e1: T, e2: T, e3: T, e12: T, e23: T, e31: T, e123: T) -> Self {
-        Self { s, e1, e2, e3, e12, e23, e31, e123 }
+        Self { c: [s, e1, e2, e12, e3, e31, e23, e123] }
     }
 
     /// From `[s, e1, e2, e3, e12, e23, e31, e123]` (the report's basis order).
     #[must_use]
     #[inline]
     pub const fn from_array(a: [T; 8]) -> Self {
-        Self::new_const(a)
+        Self::new(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7])
     }
 
     /// As `[s, e1, e2, e3, e12, e23, e31, e123]` (the report's basis order).
     #[must_use]
     #[inline]
     pub const fn to_array(self) -> [T; 8] {
-        [self.s, self.e1, self.e2, self.e3, self.e12, self.e23, self.e31, self.e123]
+        let c = self.c;
+        [c[0], c[1], c[2], c[4], c[3], c[6], c[5], c[7]]
     }
 
     /// The scalar `x` as a multivector.
     #[must_use]
     #[inline]
     pub const fn scalar(x: T) -> Self {
-        let mut m = Self::new_const([T::ZERO; 8]);
-        m.s = x;
-        m
+        let mut c = [T::ZERO; 8];
+        c[0] = x;
+        Self { c }
     }
 
     /// The scalar coefficient.
     #[must_use]
     #[inline]
     pub const fn s(self) -> T {
-        self.s
+        self.c[0]
     }
     /// The `e1` coefficient.
     #[must_use]
     #[inline]
     pub const fn e1(self) -> T {
-        self.e1
+        self.c[1]
     }
     /// The `e2` coefficient.
     #[must_use]
     #[inline]
     pub const fn e2(self) -> T {
-        self.e2
+        self.c[2]
     }
     /// The `e3` coefficient.
     #[must_use]
     #[inline]
     pub const fn e3(self) -> T {
-        self.e3
+        self.c[4]
     }
     /// The `e12` coefficient.
     #[must_use]
     #[inline]
     pub const fn e12(self) -> T {
-        self.e12
+        self.c[3]
     }
     /// The `e23` coefficient.
     #[must_use]
     #[inline]
     pub const fn e23(self) -> T {
-        self.e23
+        self.c[6]
     }
     /// The `e31` coefficient.
     #[must_use]
     #[inline]
     pub const fn e31(self) -> T {
-        self.e31
+        self.c[5]
     }
     /// The `e123` coefficient.
     #[must_use]
     #[inline]
     pub const fn e123(self) -> T {
-        self.e123
+        self.c[7]
     }
 
     /// The grade-1 part.
     #[must_use]
     #[inline]
     pub const fn vector_part(self) -> Vector<T> {
-        Vector::new(self.e1, self.e2, self.e3)
+        Vector::new(self.e1(), self.e2(), self.e3())
     }
     /// The grade-2 part.
     #[must_use]
     #[inline]
     pub const fn bivector_part(self) -> Bivector<T> {
-        Bivector::new(self.e12, self.e23, self.e31)
+        Bivector::new(self.e12(), self.e23(), self.e31())
     }
     /// The grade-3 part.
     #[must_use]
     #[inline]
     pub const fn trivector_part(self) -> Trivector<T> {
-        Trivector::new(self.e123)
+        Trivector::new(self.e123())
     }
     /// The even part (grades 0 and 2).
     #[must_use]
     #[inline]
     pub const fn even_part(self) -> Rotor<T> {
-        Rotor::new(self.s, self.e12, self.e23, self.e31)
+        Rotor::new(self.s(), self.e12(), self.e23(), self.e31())
     }
     /// The odd part (grades 1 and 3).
     #[must_use]
     #[inline]
     pub fn odd_part(self) -> Self {
-        Self::new(T::ZERO, self.e1, self.e2, self.e3, T::ZERO, T::ZERO, T::ZERO, self.e123)
+        Self::new(T::ZERO, self.e1(), self.e2(), self.e3(), T::ZERO, T::ZERO, T::ZERO, self.e123())
     }
 
     /// The grade-`k` part `⟨A⟩_k` (zero for `k > 3`).
@@ -228,14 +253,14 @@ impl<T: Scalar> Multivector<T> {
     fn signed(self, g0: i8, g1: i8, g2: i8, g3: i8) -> Self {
         let f = |x: T, g: i8| if g < 0 { -x } else { x };
         Self::new(
-            f(self.s, g0),
-            f(self.e1, g1),
-            f(self.e2, g1),
-            f(self.e3, g1),
-            f(self.e12, g2),
-            f(self.e23, g2),
-            f(self.e31, g2),
-            f(self.e123, g3),
+            f(self.s(), g0),
+            f(self.e1(), g1),
+            f(self.e2(), g1),
+            f(self.e3(), g1),
+            f(self.e12(), g2),
+            f(self.e23(), g2),
+            f(self.e31(), g2),
+            f(self.e123(), g3),
         )
     }
 
@@ -246,14 +271,32 @@ impl<T: Scalar> Multivector<T> {
     #[must_use]
     #[inline]
     pub fn dual(self) -> Self {
-        Self::new(self.e123, self.e23, self.e31, self.e12, -self.e3, -self.e1, -self.e2, -self.s)
+        Self::new(
+            self.e123(),
+            self.e23(),
+            self.e31(),
+            self.e12(),
+            -self.e3(),
+            -self.e1(),
+            -self.e2(),
+            -self.s(),
+        )
     }
 
     /// The inverse of [`dual`](Multivector::dual): `A I`, so `a.dual().undual() == a`.
     #[must_use]
     #[inline]
     pub fn undual(self) -> Self {
-        Self::new(-self.e123, -self.e23, -self.e31, -self.e12, self.e3, self.e1, self.e2, self.s)
+        Self::new(
+            -self.e123(),
+            -self.e23(),
+            -self.e31(),
+            -self.e12(),
+            self.e3(),
+            self.e1(),
+            self.e2(),
+            self.s(),
+        )
     }
 
     /// `|A|² = ⟨A Ã⟩₀`, the sum of the squares of the eight coefficients (the metric is
@@ -302,8 +345,8 @@ impl<T: Scalar> Multivector<T> {
     /// `1 + e12 + e123`.
     #[must_use]
     pub fn inverse(self) -> Option<Self> {
-        let (s, e1, e2, e3) = (self.s, self.e1, self.e2, self.e3);
-        let (e12, e23, e31, e123) = (self.e12, self.e23, self.e31, self.e123);
+        let (s, e1, e2, e3) = (self.s(), self.e1(), self.e2(), self.e3());
+        let (e12, e23, e31, e123) = (self.e12(), self.e23(), self.e31(), self.e123());
         // ⟨A Ā⟩₀ = s² - |v|² + |B|² - t²; ⟨A Ā⟩₃ = 2 (s t - v·B*), with B* = (e23, e31, e12).
         let alpha =
             s * s - e1 * e1 - e2 * e2 - e3 * e3 + e12 * e12 + e23 * e23 + e31 * e31 - e123 * e123;
@@ -347,7 +390,7 @@ impl<T: Scalar> Multivector<T> {
     /// [`NarrowError`](crate::g3::NarrowError) when any non-scalar coefficient is non-zero.
     pub fn try_scalar(self) -> Result<T, crate::g3::NarrowError> {
         crate::g3::convert::check_zero(&self, "scalar", &[0])?;
-        Ok(self.s)
+        Ok(self.s())
     }
 }
 
@@ -388,7 +431,7 @@ mod tests {
             [M::ONE, M::E1, M::E2, M::E3, M::E12, M::E23, M::E31, M::E123].into_iter().enumerate()
         {
             assert_eq!(b, M::basis(k));
-            assert_eq!(b.to_string(), if k == 0 { "1" } else { &BASIS[k][..] }.replace('e', "1e"));
+            assert_eq!(b.to_string(), if k == 0 { "1" } else { BASIS[k] }.replace('e', "1e"));
         }
     }
 

@@ -59,16 +59,16 @@ impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: a.e1 * b.s,
-            e2: a.e2 * b.s,
-            e3: a.e3 * b.s,
-            e12: a.e1 * b.e2 - a.e2 * b.e1,
-            e23: a.e2 * b.e3 - a.e3 * b.e2,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            T::ZERO,
+            a.e1 * b.s(),
+            a.e2 * b.s(),
+            a.e3 * b.s(),
+            a.e1 * b.e2() - a.e2 * b.e1(),
+            a.e2 * b.e3() - a.e3 * b.e2(),
+            -a.e1 * b.e3() + a.e3 * b.e1(),
+            a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
+        )
     }
 }
 
@@ -79,16 +79,16 @@ impl<T: Scalar> BitXor<Multivector<T>> for Bivector<T> {
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: T::ZERO,
-            e2: T::ZERO,
-            e3: T::ZERO,
-            e12: a.e12 * b.s,
-            e23: a.e23 * b.s,
-            e31: a.e31 * b.s,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.e12 * b.s(),
+            a.e23 * b.s(),
+            a.e31 * b.s(),
+            a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+        )
     }
 }
 
@@ -99,7 +99,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Trivector<T> {
     fn bitxor(self, b: Multivector<T>) -> Trivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Trivector { e123: a.e123 * b.s }
+        Trivector { e123: a.e123 * b.s() }
     }
 }
 
@@ -110,16 +110,16 @@ impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.s,
-            e1: a.s * b.e1,
-            e2: a.s * b.e2,
-            e3: a.s * b.e3,
-            e12: a.s * b.e12 + a.e12 * b.s,
-            e23: a.s * b.e23 + a.e23 * b.s,
-            e31: a.s * b.e31 + a.e31 * b.s,
-            e123: a.s * b.e123 + a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            a.s * b.s(),
+            a.s * b.e1(),
+            a.s * b.e2(),
+            a.s * b.e3(),
+            a.s * b.e12() + a.e12 * b.s(),
+            a.s * b.e23() + a.e23 * b.s(),
+            a.s * b.e31() + a.e31 * b.s(),
+            a.s * b.e123() + a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+        )
     }
 }
 
@@ -130,16 +130,16 @@ impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: a.s * b.e1,
-            e2: a.s * b.e2,
-            e3: a.s * b.e3,
-            e12: a.e1 * b.e2 - a.e2 * b.e1,
-            e23: a.e2 * b.e3 - a.e3 * b.e2,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1,
-            e123: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        }
+        Multivector::new(
+            T::ZERO,
+            a.s() * b.e1,
+            a.s() * b.e2,
+            a.s() * b.e3,
+            a.e1() * b.e2 - a.e2() * b.e1,
+            a.e2() * b.e3 - a.e3() * b.e2,
+            -a.e1() * b.e3 + a.e3() * b.e1,
+            a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
+        )
     }
 }
 
@@ -150,16 +150,16 @@ impl<T: Scalar> BitXor<Bivector<T>> for Multivector<T> {
     fn bitxor(self, b: Bivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: T::ZERO,
-            e1: T::ZERO,
-            e2: T::ZERO,
-            e3: T::ZERO,
-            e12: a.s * b.e12,
-            e23: a.s * b.e23,
-            e31: a.s * b.e31,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        }
+        Multivector::new(
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            a.s() * b.e12,
+            a.s() * b.e23,
+            a.s() * b.e31,
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12,
+        )
     }
 }
 
@@ -170,7 +170,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Multivector<T> {
     fn bitxor(self, b: Trivector<T>) -> Trivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Trivector { e123: a.s * b.e123 }
+        Trivector { e123: a.s() * b.e123 }
     }
 }
 
@@ -181,16 +181,16 @@ impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.s,
-            e1: a.e1 * b.s,
-            e2: a.e2 * b.s,
-            e3: a.e3 * b.s,
-            e12: a.s * b.e12 + a.e12 * b.s,
-            e23: a.s * b.e23 + a.e23 * b.s,
-            e31: a.s * b.e31 + a.e31 * b.s,
-            e123: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12 + a.e123 * b.s,
-        }
+        Multivector::new(
+            a.s() * b.s,
+            a.e1() * b.s,
+            a.e2() * b.s,
+            a.e3() * b.s,
+            a.s() * b.e12 + a.e12() * b.s,
+            a.s() * b.e23 + a.e23() * b.s,
+            a.s() * b.e31 + a.e31() * b.s,
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12 + a.e123() * b.s,
+        )
     }
 }
 
@@ -201,22 +201,22 @@ impl<T: Scalar> BitXor<Multivector<T>> for Multivector<T> {
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.s,
-            e1: a.s * b.e1 + a.e1 * b.s,
-            e2: a.s * b.e2 + a.e2 * b.s,
-            e3: a.s * b.e3 + a.e3 * b.s,
-            e12: a.s * b.e12 + a.e1 * b.e2 - a.e2 * b.e1 + a.e12 * b.s,
-            e23: a.s * b.e23 + a.e2 * b.e3 - a.e3 * b.e2 + a.e23 * b.s,
-            e31: a.s * b.e31 - a.e1 * b.e3 + a.e3 * b.e1 + a.e31 * b.s,
-            e123: a.s * b.e123
-                + a.e1 * b.e23
-                + a.e2 * b.e31
-                + a.e3 * b.e12
-                + a.e12 * b.e3
-                + a.e23 * b.e1
-                + a.e31 * b.e2
-                + a.e123 * b.s,
-        }
+        Multivector::new(
+            a.s() * b.s(),
+            a.s() * b.e1() + a.e1() * b.s(),
+            a.s() * b.e2() + a.e2() * b.s(),
+            a.s() * b.e3() + a.e3() * b.s(),
+            a.s() * b.e12() + a.e1() * b.e2() - a.e2() * b.e1() + a.e12() * b.s(),
+            a.s() * b.e23() + a.e2() * b.e3() - a.e3() * b.e2() + a.e23() * b.s(),
+            a.s() * b.e31() - a.e1() * b.e3() + a.e3() * b.e1() + a.e31() * b.s(),
+            a.s() * b.e123()
+                + a.e1() * b.e23()
+                + a.e2() * b.e31()
+                + a.e3() * b.e12()
+                + a.e12() * b.e3()
+                + a.e23() * b.e1()
+                + a.e31() * b.e2()
+                + a.e123() * b.s(),
+        )
     }
 }

@@ -116,16 +116,16 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Vector<T> {
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-            e1: a.e1 * b.e123,
-            e2: a.e2 * b.e123,
-            e3: a.e3 * b.e123,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
+            a.e1 * b.e123(),
+            a.e2 * b.e123(),
+            a.e3 * b.e123(),
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -136,16 +136,16 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-            e1: a.e12 * b.e31 - a.e31 * b.e12,
-            e2: -a.e12 * b.e23 + a.e23 * b.e12,
-            e3: -a.e23 * b.e31 + a.e31 * b.e23,
-            e12: a.e12 * b.e123,
-            e23: a.e23 * b.e123,
-            e31: a.e31 * b.e123,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+            a.e12 * b.e31() - a.e31 * b.e12(),
+            -a.e12 * b.e23() + a.e23 * b.e12(),
+            -a.e23 * b.e31() + a.e31 * b.e23(),
+            a.e12 * b.e123(),
+            a.e23 * b.e123(),
+            a.e31 * b.e123(),
+            T::ZERO,
+        )
     }
 }
 
@@ -156,16 +156,16 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Trivector<T> {
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e123 * b.s,
-            e1: a.e123 * b.e1,
-            e2: a.e123 * b.e2,
-            e3: a.e123 * b.e3,
-            e12: a.e123 * b.e12,
-            e23: a.e123 * b.e23,
-            e31: a.e123 * b.e31,
-            e123: a.e123 * b.e123,
-        }
+        Multivector::new(
+            a.e123 * b.s(),
+            a.e123 * b.e1(),
+            a.e123 * b.e2(),
+            a.e123 * b.e3(),
+            a.e123 * b.e12(),
+            a.e123 * b.e23(),
+            a.e123 * b.e31(),
+            a.e123 * b.e123(),
+        )
     }
 }
 
@@ -176,16 +176,16 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.e123 + a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-            e1: a.e12 * b.e31 - a.e31 * b.e12,
-            e2: -a.e12 * b.e23 + a.e23 * b.e12,
-            e3: -a.e23 * b.e31 + a.e31 * b.e23,
-            e12: a.e12 * b.e123,
-            e23: a.e23 * b.e123,
-            e31: a.e31 * b.e123,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.s * b.e123() + a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
+            a.e12 * b.e31() - a.e31 * b.e12(),
+            -a.e12 * b.e23() + a.e23 * b.e12(),
+            -a.e23 * b.e31() + a.e31 * b.e23(),
+            a.e12 * b.e123(),
+            a.e23 * b.e123(),
+            a.e31 * b.e123(),
+            T::ZERO,
+        )
     }
 }
 
@@ -196,16 +196,16 @@ impl<T: Scalar> BitAnd<Vector<T>> for Multivector<T> {
     fn bitand(self, b: Vector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-            e1: a.e123 * b.e1,
-            e2: a.e123 * b.e2,
-            e3: a.e123 * b.e3,
-            e12: T::ZERO,
-            e23: T::ZERO,
-            e31: T::ZERO,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
+            a.e123() * b.e1,
+            a.e123() * b.e2,
+            a.e123() * b.e3,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+            T::ZERO,
+        )
     }
 }
 
@@ -216,16 +216,16 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
     fn bitand(self, b: Bivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-            e1: a.e12 * b.e31 - a.e31 * b.e12,
-            e2: -a.e12 * b.e23 + a.e23 * b.e12,
-            e3: -a.e23 * b.e31 + a.e31 * b.e23,
-            e12: a.e123 * b.e12,
-            e23: a.e123 * b.e23,
-            e31: a.e123 * b.e31,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12,
+            a.e12() * b.e31 - a.e31() * b.e12,
+            -a.e12() * b.e23 + a.e23() * b.e12,
+            -a.e23() * b.e31 + a.e31() * b.e23,
+            a.e123() * b.e12,
+            a.e123() * b.e23,
+            a.e123() * b.e31,
+            T::ZERO,
+        )
     }
 }
 
@@ -236,16 +236,16 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Multivector<T> {
     fn bitand(self, b: Trivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.e123,
-            e1: a.e1 * b.e123,
-            e2: a.e2 * b.e123,
-            e3: a.e3 * b.e123,
-            e12: a.e12 * b.e123,
-            e23: a.e23 * b.e123,
-            e31: a.e31 * b.e123,
-            e123: a.e123 * b.e123,
-        }
+        Multivector::new(
+            a.s() * b.e123,
+            a.e1() * b.e123,
+            a.e2() * b.e123,
+            a.e3() * b.e123,
+            a.e12() * b.e123,
+            a.e23() * b.e123,
+            a.e31() * b.e123,
+            a.e123() * b.e123,
+        )
     }
 }
 
@@ -256,16 +256,16 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
     fn bitand(self, b: Rotor<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12 + a.e123 * b.s,
-            e1: a.e12 * b.e31 - a.e31 * b.e12,
-            e2: -a.e12 * b.e23 + a.e23 * b.e12,
-            e3: -a.e23 * b.e31 + a.e31 * b.e23,
-            e12: a.e123 * b.e12,
-            e23: a.e123 * b.e23,
-            e31: a.e123 * b.e31,
-            e123: T::ZERO,
-        }
+        Multivector::new(
+            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12 + a.e123() * b.s,
+            a.e12() * b.e31 - a.e31() * b.e12,
+            -a.e12() * b.e23 + a.e23() * b.e12,
+            -a.e23() * b.e31 + a.e31() * b.e23,
+            a.e123() * b.e12,
+            a.e123() * b.e23,
+            a.e123() * b.e31,
+            T::ZERO,
+        )
     }
 }
 
@@ -276,22 +276,22 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Multivector<T> {
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
         // The Cayley-table terms (module docs) whose factors both types hold.
         let a = self;
-        Multivector {
-            s: a.s * b.e123
-                + a.e1 * b.e23
-                + a.e2 * b.e31
-                + a.e3 * b.e12
-                + a.e12 * b.e3
-                + a.e23 * b.e1
-                + a.e31 * b.e2
-                + a.e123 * b.s,
-            e1: a.e1 * b.e123 + a.e12 * b.e31 - a.e31 * b.e12 + a.e123 * b.e1,
-            e2: a.e2 * b.e123 - a.e12 * b.e23 + a.e23 * b.e12 + a.e123 * b.e2,
-            e3: a.e3 * b.e123 - a.e23 * b.e31 + a.e31 * b.e23 + a.e123 * b.e3,
-            e12: a.e12 * b.e123 + a.e123 * b.e12,
-            e23: a.e23 * b.e123 + a.e123 * b.e23,
-            e31: a.e31 * b.e123 + a.e123 * b.e31,
-            e123: a.e123 * b.e123,
-        }
+        Multivector::new(
+            a.s() * b.e123()
+                + a.e1() * b.e23()
+                + a.e2() * b.e31()
+                + a.e3() * b.e12()
+                + a.e12() * b.e3()
+                + a.e23() * b.e1()
+                + a.e31() * b.e2()
+                + a.e123() * b.s(),
+            a.e1() * b.e123() + a.e12() * b.e31() - a.e31() * b.e12() + a.e123() * b.e1(),
+            a.e2() * b.e123() - a.e12() * b.e23() + a.e23() * b.e12() + a.e123() * b.e2(),
+            a.e3() * b.e123() - a.e23() * b.e31() + a.e31() * b.e23() + a.e123() * b.e3(),
+            a.e12() * b.e123() + a.e123() * b.e12(),
+            a.e23() * b.e123() + a.e123() * b.e23(),
+            a.e31() * b.e123() + a.e123() * b.e31(),
+            a.e123() * b.e123(),
+        )
     }
 }

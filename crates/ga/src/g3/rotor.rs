@@ -1,7 +1,7 @@
 //! [`Rotor`]: the even subalgebra (scalar + bivector); unit rotors are rotations.
 
 use crate::Scalar;
-use crate::g3::linear::impl_linear;
+use crate::g3::linear::impl_fields;
 use crate::g3::{Bivector, Vector};
 
 /// An element of the even subalgebra, `s + e12·e12 + e23·e23 + e31·e31`; a rotation when unit.
@@ -17,7 +17,7 @@ use crate::g3::{Bivector, Vector};
 /// Composition reads right to left, as for matrices and quaternions: `(R2 * R1).rotate(x)` first
 /// applies `R1`, then `R2`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-#[repr(C)]
+#[repr(C, align(16))]
 pub struct Rotor<T> {
     /// The scalar part (`cos(θ/2)` for a unit rotor).
     pub s: T,
@@ -29,7 +29,7 @@ pub struct Rotor<T> {
     pub e31: T,
 }
 
-impl_linear!(Rotor { s: "", e12: "e12", e23: "e23", e31: "e31" });
+impl_fields!(Rotor { s: "", e12: "e12", e23: "e23", e31: "e31" });
 
 impl<T: Scalar> Rotor<T> {
     /// The identity rotation, `1`.
@@ -221,7 +221,7 @@ impl<T: Scalar> Rotor<T> {
     #[must_use]
     #[inline]
     pub fn reverse(self) -> Self {
-        Self::new(self.s, -self.e12, -self.e23, -self.e31)
+        Self::from_array(T::rotor_reverse(self.to_array()))
     }
 
     /// The Clifford conjugate, equal to the reverse for even elements.
@@ -239,12 +239,15 @@ impl<T: Scalar> Rotor<T> {
     }
 
     /// `R⁻¹ = R̃ / (R R̃)` (`R R̃ = s² + |B|²` is a scalar for every even element of G3), or
-    /// `None` for zero or a non-finite result.
+    /// `None` when `|R|²` is zero or not finite. For a unit rotor this is the
+    /// [reverse](Rotor::reverse), which is what glam's `Quat::inverse` computes (it assumes a unit
+    /// quaternion); call `reverse` when the rotor is known to be unit.
     #[must_use]
     #[inline]
     pub fn inverse(self) -> Option<Self> {
-        let r = self.norm_squared().recip();
-        (r.is_finite() && r > T::ZERO).then(|| self.reverse() * r)
+        // Finite whenever 0 < |R|² < ∞, as for `Vector::inverse`.
+        let n2 = self.norm_squared();
+        (n2 > T::ZERO && n2 < T::INFINITY).then_some(self.reverse() / n2)
     }
 }
 

@@ -1,7 +1,7 @@
 //! [`Trivector`]: grade 3, a multiple of the pseudoscalar `I = e123`.
 
 use crate::Scalar;
-use crate::g3::linear::impl_linear;
+use crate::g3::linear::impl_fields;
 
 /// A trivector (grade 3), an oriented volume: `e123·I` with `I = e1 e2 e3`.
 ///
@@ -13,7 +13,7 @@ pub struct Trivector<T> {
     pub e123: T,
 }
 
-impl_linear!(Trivector { e123: "e123" });
+impl_fields!(Trivector { e123: "e123" });
 
 impl<T: Scalar> Trivector<T> {
     /// The zero trivector.

@@ -1,7 +1,7 @@
 //! [`Vector`]: grade 1, `e1 e1 + e2 e2 + e3 e3`.
 
 use crate::Scalar;
-use crate::g3::linear::impl_linear;
+use crate::g3::linear::impl_fields;
 use crate::g3::{Bivector, Rotor};
 
 /// A vector (grade 1): `e1·e1 + e2·e2 + e3·e3`. Also used for points (position vectors).
@@ -16,7 +16,7 @@ pub struct Vector<T> {
     pub e3: T,
 }
 
-impl_linear!(Vector { e1: "e1", e2: "e2", e3: "e3" });
+impl_fields!(Vector { e1: "e1", e2: "e2", e3: "e3" });
 
 impl<T: Scalar> Vector<T> {
     /// The zero vector.
@@ -78,13 +78,15 @@ impl<T: Scalar> Vector<T> {
         (r.is_finite() && r > T::ZERO).then(|| self * r)
     }
 
-    /// `v⁻¹ = v / |v|²` (a vector squares to the scalar `|v|²`), or `None` for the zero vector
-    /// or a non-finite result.
+    /// `v⁻¹ = v / |v|²` (a vector squares to the scalar `|v|²`), or `None` when `|v|²` is zero
+    /// or not finite.
     #[must_use]
     #[inline]
     pub fn inverse(self) -> Option<Self> {
-        let r = self.norm_squared().recip();
-        (r.is_finite() && r > T::ZERO).then(|| self * r)
+        // With 0 < |v|² < ∞ the result is finite: |v⁻¹| = 1/|v| and |v|² ≥ the smallest
+        // subnormal bounds 1/|v| far below the largest float.
+        let n2 = self.norm_squared();
+        (n2 > T::ZERO && n2 < T::INFINITY).then_some(self / n2)
     }
 
     /// The reverse `ṽ = v` (a single vector has nothing to reverse).
