@@ -578,8 +578,10 @@ struct Binning {
 
 impl Binning {
     fn new(min: f64, extent: f64, count: usize) -> Self {
-        // Slightly under count / extent so that the largest centroid lands in the last bin.
-        Self { min, scale: count as f64 * (1.0 - 1e-9) / extent, count }
+        // Slightly under count / extent so that the largest centroid lands in the last bin;
+        // 0 for a flat axis (everything in bin 0).
+        let scale = if extent > 0.0 { count as f64 * (1.0 - 1e-9) / extent } else { 0.0 };
+        Self { min, scale, count }
     }
 
     #[inline(always)]
@@ -656,25 +658,26 @@ impl<T: Real> Builder<T> {
         extent: &[f64; 3],
     ) -> Option<Split> {
         let count = BINS.min(end - start);
-        let binnings: [Option<Binning>; 3] = core::array::from_fn(|k| {
-            (extent[k] > 0.0).then(|| Binning::new(cmin[k], extent[k], count))
-        });
+        // A flat axis bins everything into its bin 0 (no branch in the loop below) and is
+        // skipped when costs are swept.
+        let binnings: [Binning; 3] =
+            core::array::from_fn(|k| Binning::new(cmin[k], extent[k], count));
         let empty = Bin { bounds: Aabb::empty(), count: 0 };
         self.bins.clear();
         self.bins.resize(3 * count, empty);
         for r in &self.refs[start..end] {
             for (k, binning) in binnings.iter().enumerate() {
-                if let Some(binning) = binning {
-                    let bin = &mut self.bins[k * count + binning.bin(r.centroid2(k))];
-                    bin.bounds.grow(&r.bounds);
-                    bin.count += 1;
-                }
+                let bin = &mut self.bins[k * count + binning.bin(r.centroid2(k))];
+                bin.bounds.grow(&r.bounds);
+                bin.count += 1;
             }
         }
         let mut best: Option<Split> = None;
         let mut right_cost = [0.0f64; BINS];
-        for (axis, binning) in binnings.iter().enumerate() {
-            let Some(binning) = *binning else { continue };
+        for (axis, &binning) in binnings.iter().enumerate() {
+            if extent[axis] <= 0.0 {
+                continue;
+            }
             let bins = &self.bins[axis * count..(axis + 1) * count];
             // Right-to-left sweep: cost of everything right of each boundary (-1: nothing).
             let mut acc = Aabb::empty();
