@@ -1,7 +1,7 @@
 //! Geometric algebra for the wedge ray tracers.
 //!
 //! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade and hand-expanded
-//! products; [`reference`] is a generic (slow, obviously correct) Clifford algebra the fast
+//! products; [`reference`](mod@reference) is a generic (slow, obviously correct) Clifford algebra the fast
 //! kernels are tested against; [`errata`] lists what the report this project starts from gets
 //! wrong and what the code does instead.
 //!

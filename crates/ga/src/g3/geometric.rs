@@ -20,6 +20,17 @@
 //!
 //! (Report figure 2.5 prints this table transposed: its entry in row `e1`, column `e2` is
 //! `-e12`, which is `e2 e1`; see [`crate::errata`].)
+//!
+//! # The full product
+//!
+//! `Multivector * Multivector` needs all 64 terms. On x86-64 with AVX2 and FMA it uses the
+//! structure of the table in the bitmask basis `1, e1, e2, e12, e3, e13, e23, e123`, where
+//! `e_k e_j = ±e_(k XOR j)`: `a b = Σ_k a_k (e_k b)`, and `e_k b` is `b` with its lanes permuted
+//! by `l ↦ l XOR k` (in-register shuffles) and a fixed sign pattern. With `b` in two 4-lane
+//! registers that is 16 fused multiply-adds, 6 shuffles and 6 sign flips; `Multivector` stores
+//! its coefficients in that order (with `e31` for `e13`) so no reordering is needed. Other
+//! targets use the 64 terms written out. `Rotor * Rotor` uses the same idea on the four lanes
+//! `1, e12, e23, e31` (bitmasks `0, 3, 6, 5`, closed under XOR), like a quaternion product.
 
 // The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel is a sum of
 // products of coefficients, which is what clippy's heuristic flags.
@@ -445,7 +456,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
 
 /// Geometric product `Multivector * Multivector -> Multivector`, all 64 terms of the Cayley
 /// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=native`) it is
-/// the SIMD kernel in [`crate::g3::simd`]; elsewhere [`geometric_portable`].
+/// the SIMD kernel of the module docs; elsewhere the 64 terms written out.
 impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
@@ -506,7 +517,7 @@ pub(crate) fn geometric_portable<T: Scalar>(
 
 /// Geometric product `Rotor * Rotor -> Rotor`: composition of rotations (`(R2 * R1)` applies
 /// `R1` first). The same 16 products as a quaternion product; for f32 on x86-64 with AVX2 and
-/// FMA it is the SSE kernel in [`crate::g3::simd`], elsewhere [`rotor_product_portable`].
+/// FMA it is an SSE kernel, elsewhere the lane-by-lane expansion below.
 impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]

@@ -11,8 +11,9 @@ use crate::Scalar;
 /// Writes `terms` as the report writes a multivector: `1 + 2e1 - 0.5e23`.
 ///
 /// Zero terms are omitted and an all-zero value prints as `0`. A unit coefficient on a blade
-/// is printed (`1e12`) so that every term reads the same way; the formatter's precision, if
-/// any, applies to each coefficient (`{:.2}`).
+/// is printed (`1e12`) so that every term reads the same way. The formatter's precision, if
+/// any, applies to each coefficient (`{:.2}`), and terms that would print as zero at that
+/// precision are omitted too (rounding noise such as `1e-17e1` does not clutter `{:.3}`).
 pub(crate) fn write_terms<T: Scalar>(
     f: &mut fmt::Formatter<'_>,
     terms: impl IntoIterator<Item = (T, &'static str)>,
@@ -22,6 +23,13 @@ pub(crate) fn write_terms<T: Scalar>(
         // NaN is not zero, so it is printed rather than silently dropped.
         if c == T::ZERO {
             continue;
+        }
+        if let Some(p) = f.precision() {
+            // Below half a unit in the last printed place the coefficient would print as zero.
+            let half_unit = 0.5 * 10f64.powi(-i32::try_from(p).unwrap_or(i32::MAX));
+            if c.to_f64().abs() < half_unit {
+                continue;
+            }
         }
         let negative = c < T::ZERO;
         let magnitude = if negative { -c } else { c };

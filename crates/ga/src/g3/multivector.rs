@@ -446,6 +446,10 @@ mod tests {
         assert_eq!(format!("{:.2}", M::E1 * 0.125 - M::E123), "0.12e1 - 1.00e123");
         assert_eq!(crate::g3::Rotor::new(0.5, 0.0, -0.5, 0.0).to_string(), "0.5 - 0.5e23");
         assert_eq!(crate::g3::Vector::<f32>::ZERO.to_string(), "0");
+        // Terms that round to zero at the requested precision are left out.
+        assert_eq!(format!("{:.3}", M::ONE + M::E1 * 1e-17), "1.000");
+        assert_eq!(format!("{:.3}", M::E1 * 1e-17), "0");
+        assert_eq!((M::ONE + M::E1 * 1e-17).to_string(), "1 + 0.00000000000000001e1");
     }
 
     #[test]
