@@ -36,6 +36,10 @@ impl Dyadic {
         let biased = i64::try_from((bits >> 52) & 0x7ff).unwrap_or(0);
         let (mant, exp) =
             if biased == 0 { (fraction, -1074) } else { (fraction | (1u64 << 52), biased - 1075) };
+        // Drop trailing zero bits (1e4 becomes 10000 * 2^0, not 5^4 2^56 * 2^-52): smaller
+        // mantissas make every later product cheaper.
+        let zeros = if mant == 0 { 0 } else { mant.trailing_zeros() };
+        let (mant, exp) = (mant >> zeros, exp + i64::from(zeros));
         let mant = BigInt::from(mant);
         Some(Self { mant: if x.is_sign_negative() { -mant } else { mant }, exp })
     }
@@ -59,18 +63,28 @@ impl Dyadic {
         self.sign() == Sign::Zero
     }
 
-    /// The two mantissas brought to the smaller of the two exponents (exactly: the mantissa
-    /// with the larger exponent is shifted left), and that exponent.
-    fn aligned(&self, other: &Self) -> (BigInt, BigInt, i64) {
+    /// `self + sign * other`, exactly: the mantissa with the larger exponent is shifted left
+    /// to the smaller exponent.
+    fn add_signed(&self, other: &Self, negate: bool) -> Self {
+        // An exact zero has an arbitrary exponent: it must not take part in the alignment.
+        if other.is_zero() {
+            return self.clone();
+        }
+        if self.is_zero() {
+            return if negate { -other } else { other.clone() };
+        }
+        let combine = |a: BigInt, b: &BigInt| if negate { a - b } else { a + b };
         match self.exp.cmp(&other.exp) {
-            Ordering::Equal => (self.mant.clone(), other.mant.clone(), self.exp),
+            Ordering::Equal => {
+                Self { mant: combine(self.mant.clone(), &other.mant), exp: self.exp }
+            }
             Ordering::Greater => {
-                let shift = shift_amount(self.exp - other.exp);
-                (&self.mant << shift, other.mant.clone(), other.exp)
+                let shifted = &self.mant << shift_amount(self.exp - other.exp);
+                Self { mant: combine(shifted, &other.mant), exp: other.exp }
             }
             Ordering::Less => {
-                let shift = shift_amount(other.exp - self.exp);
-                (self.mant.clone(), &other.mant << shift, self.exp)
+                let shifted = &other.mant << shift_amount(other.exp - self.exp);
+                Self { mant: combine(self.mant.clone(), &shifted), exp: self.exp }
             }
         }
     }
@@ -146,22 +160,14 @@ fn scale_by_power_of_two(mut x: f64, mut exp: i64) -> f64 {
 impl Add for &Dyadic {
     type Output = Dyadic;
     fn add(self, other: &Dyadic) -> Dyadic {
-        // Adding zero must not align exponents: an exact zero has an arbitrary exponent.
-        if self.is_zero() {
-            return other.clone();
-        }
-        if other.is_zero() {
-            return self.clone();
-        }
-        let (a, b, exp) = self.aligned(other);
-        Dyadic { mant: a + b, exp }
+        self.add_signed(other, false)
     }
 }
 
 impl Sub for &Dyadic {
     type Output = Dyadic;
     fn sub(self, other: &Dyadic) -> Dyadic {
-        self + &(-other)
+        self.add_signed(other, true)
     }
 }
 

@@ -46,9 +46,10 @@
 //!     sides of the edge as seen along the ray (two consistently oriented triangles that both
 //!     face the ray, or both face away, such as any two neighbours on a flat or convex
 //!     surface) hits **exactly one** of them: the one on the `+x` side of the edge as seen
-//!     along the ray, or on the `+y` side if the edge runs along `x` as seen, or on the `+z`
-//!     side if it runs along both. Where the surface folds over at the edge (a silhouette
-//!     seen exactly edge-on), the ray hits both or neither, as any slightly moved ray would;
+//!     along the ray; if the plane through the edge and the ray contains the `x` direction,
+//!     the one on the `+y` side; if it contains `x` and `y`, the `+z` side. Where the surface
+//!     folds over at the edge (a silhouette seen exactly edge-on), the ray hits both or
+//!     neither, as any slightly moved ray would;
 //!   - a ray through a vertex whose triangles cover a neighbourhood of it once as seen along
 //!     the ray (a flat fan, the tip of a convex cone, any vertex of a closed convex mesh)
 //!     hits **exactly one** of them;
@@ -93,13 +94,19 @@
 //!
 //! # What it costs
 //!
-//! A test that the filter decides (nearly all rays that are not aimed at an edge) is
-//! about thirty floating-point operations per edge, branch-free, in the same league as a
-//! plain `f64` kernel. A test with an edge test the filter cannot decide (a ray within a few
-//! ulps of an edge or a vertex, or exactly through it) re-evaluates that determinant exactly
-//! with big integers, a few microseconds. Every hit computes `t`, `u` and `v` exactly and
-//! divides with big integers, a few microseconds more; [`Intersector::occludes`] skips that.
-//! The benchmark `cargo bench -p exact-tracer` measures all three.
+//! Measured with `cargo bench -p exact-tracer` (2-core shared machine, so only the ratios
+//! are trustworthy), per ray-triangle test:
+//!
+//! | case | cost |
+//! |---|---|
+//! | plain `f64` Moller-Trumbore, for scale | ~12 ns |
+//! | filter decides (any ray not within a few ulps of an edge), [`Intersector::occludes`] | ~75 ns |
+//! | one edge test falls back to exact arithmetic (ray exactly through an edge) | ~1.5 us |
+//! | a hit through [`Intersector::intersect`] (exact `t`, `u`, `v`, three big divisions) | ~4.5 us |
+//!
+//! So the reference costs a few times a plain kernel on misses, which are most tests of a
+//! traversal, and microseconds per hit and per near-edge test. [`Intersector::occludes`] and
+//! [`Exact::crossing`] never compute `t`, `u` and `v`.
 
 #![deny(missing_docs)]
 
@@ -217,11 +224,14 @@ fn crossing(tri: &Triangle<f64>, ray: &Ray<f64>, t_max: f64) -> Option<Sign> {
     }
     let (o, d) = (ray.origin, ray.dir);
     let (pa, pb, pc) = (sub(tri.a, o), sub(tri.b, o), sub(tri.c, o));
-    let edges = [
-        det_filtered(pa, pb, d, EDGE_REL),
-        det_filtered(pb, pc, d, EDGE_REL),
-        det_filtered(pc, pa, d, EDGE_REL),
-    ];
+    let (eab, ebc) = (det_filtered(pa, pb, d, EDGE_REL), det_filtered(pb, pc, d, EDGE_REL));
+    // Most misses are already decided by two edges: skip the third.
+    if let (Some(x), Some(y)) = (eab.sign(), ebc.sign())
+        && x != y
+    {
+        return None;
+    }
+    let edges = [eab, ebc, det_filtered(pc, pa, d, EDGE_REL)];
     let certified = edges.map(Filtered::sign);
 
     // Two certified signs that differ decide a miss before any exact work.
