@@ -15,7 +15,7 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn left_contraction(self, b: Self) -> Self {
         let a = self;
-        Multivector::new(
+        Self::new(
             a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
                 - a.e12() * b.e12()
                 - a.e23() * b.e23()
@@ -37,7 +37,7 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn right_contraction(self, b: Self) -> Self {
         let a = self;
-        Multivector::new(
+        Self::new(
             a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
                 - a.e12() * b.e12()
                 - a.e23() * b.e23()
@@ -71,14 +71,14 @@ impl<T: Scalar> Multivector<T> {
     #[inline]
     pub fn commutator(self, b: Self) -> Self {
         let a = self;
-        Multivector::new(
+        Self::new(
             T::ZERO,
-            -a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2() - a.e31() * b.e3(),
+            a.e3() * b.e31() - a.e2() * b.e12() + a.e12() * b.e2() - a.e31() * b.e3(),
             a.e1() * b.e12() - a.e3() * b.e23() - a.e12() * b.e1() + a.e23() * b.e3(),
-            -a.e1() * b.e31() + a.e2() * b.e23() - a.e23() * b.e2() + a.e31() * b.e1(),
+            a.e2() * b.e23() - a.e1() * b.e31() - a.e23() * b.e2() + a.e31() * b.e1(),
             a.e1() * b.e2() - a.e2() * b.e1() - a.e23() * b.e31() + a.e31() * b.e23(),
             a.e2() * b.e3() - a.e3() * b.e2() + a.e12() * b.e31() - a.e31() * b.e12(),
-            -a.e1() * b.e3() + a.e3() * b.e1() - a.e12() * b.e23() + a.e23() * b.e12(),
+            a.e3() * b.e1() - a.e1() * b.e3() - a.e12() * b.e23() + a.e23() * b.e12(),
             T::ZERO,
         )
     }

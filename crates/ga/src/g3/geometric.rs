@@ -53,7 +53,7 @@ impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
             s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
             e12: a.e1 * b.e2 - a.e2 * b.e1,
             e23: a.e2 * b.e3 - a.e3 * b.e2,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1,
+            e31: a.e3 * b.e1 - a.e1 * b.e3,
         }
     }
 }
@@ -68,9 +68,9 @@ impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
         let a = self;
         Multivector::new(
             T::ZERO,
-            -a.e2 * b.e12 + a.e3 * b.e31,
+            a.e3 * b.e31 - a.e2 * b.e12,
             a.e1 * b.e12 - a.e3 * b.e23,
-            -a.e1 * b.e31 + a.e2 * b.e23,
+            a.e2 * b.e23 - a.e1 * b.e31,
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -103,7 +103,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
             T::ZERO,
             a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
             a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
-            -a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s,
+            a.e2 * b.e23 - a.e1 * b.e31 + a.e3 * b.s,
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -123,10 +123,10 @@ impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
             a.e1 * b.e1() + a.e2 * b.e2() + a.e3 * b.e3(),
             a.e1 * b.s() - a.e2 * b.e12() + a.e3 * b.e31(),
             a.e1 * b.e12() + a.e2 * b.s() - a.e3 * b.e23(),
-            -a.e1 * b.e31() + a.e2 * b.e23() + a.e3 * b.s(),
+            a.e2 * b.e23() - a.e1 * b.e31() + a.e3 * b.s(),
             a.e1 * b.e2() - a.e2 * b.e1() + a.e3 * b.e123(),
             a.e1 * b.e123() + a.e2 * b.e3() - a.e3 * b.e2(),
-            -a.e1 * b.e3() + a.e2 * b.e123() + a.e3 * b.e1(),
+            a.e2 * b.e123() - a.e1 * b.e3() + a.e3 * b.e1(),
             a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
         )
     }
@@ -143,8 +143,8 @@ impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
         Multivector::new(
             T::ZERO,
             a.e12 * b.e2 - a.e31 * b.e3,
-            -a.e12 * b.e1 + a.e23 * b.e3,
-            -a.e23 * b.e2 + a.e31 * b.e1,
+            a.e23 * b.e3 - a.e12 * b.e1,
+            a.e31 * b.e1 - a.e23 * b.e2,
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -163,9 +163,9 @@ impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
         let a = self;
         Rotor {
             s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e12: -a.e23 * b.e31 + a.e31 * b.e23,
+            e12: a.e31 * b.e23 - a.e23 * b.e31,
             e23: a.e12 * b.e31 - a.e31 * b.e12,
-            e31: -a.e12 * b.e23 + a.e23 * b.e12,
+            e31: a.e23 * b.e12 - a.e12 * b.e23,
         }
     }
 }
@@ -194,7 +194,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
             s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
             e12: a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
             e23: a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: -a.e12 * b.e23 + a.e23 * b.e12 + a.e31 * b.s,
+            e31: a.e23 * b.e12 - a.e12 * b.e23 + a.e31 * b.s,
         }
     }
 }
@@ -209,11 +209,11 @@ impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
         Multivector::new(
             -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
             a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
-            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
-            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            a.e23 * b.e3() - a.e12 * b.e1() - a.e31 * b.e123(),
+            a.e31 * b.e1() - a.e12 * b.e123() - a.e23 * b.e2(),
             a.e12 * b.s() - a.e23 * b.e31() + a.e31 * b.e23(),
             a.e12 * b.e31() + a.e23 * b.s() - a.e31 * b.e12(),
-            -a.e12 * b.e23() + a.e23 * b.e12() + a.e31 * b.s(),
+            a.e23 * b.e12() - a.e12 * b.e23() + a.e31 * b.s(),
             a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
         )
     }
@@ -386,7 +386,7 @@ impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
             a.s() * b.e3 - a.e23() * b.e2 + a.e31() * b.e1,
             a.e1() * b.e2 - a.e2() * b.e1 + a.e123() * b.e3,
             a.e2() * b.e3 - a.e3() * b.e2 + a.e123() * b.e1,
-            -a.e1() * b.e3 + a.e3() * b.e1 + a.e123() * b.e2,
+            a.e3() * b.e1 - a.e1() * b.e3 + a.e123() * b.e2,
             a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
         )
     }
@@ -401,9 +401,9 @@ impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
         let a = self;
         Multivector::new(
             -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
-            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e3() * b.e31 - a.e2() * b.e12 - a.e123() * b.e23,
             a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
-            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            a.e2() * b.e23 - a.e1() * b.e31 - a.e123() * b.e12,
             a.s() * b.e12 - a.e23() * b.e31 + a.e31() * b.e23,
             a.s() * b.e23 + a.e12() * b.e31 - a.e31() * b.e12,
             a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12,
@@ -443,7 +443,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
             a.s() * b.s - a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
             a.e1() * b.s - a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
             a.e1() * b.e12 + a.e2() * b.s - a.e3() * b.e23 - a.e123() * b.e31,
-            -a.e1() * b.e31 + a.e2() * b.e23 + a.e3() * b.s - a.e123() * b.e12,
+            a.e2() * b.e23 - a.e1() * b.e31 + a.e3() * b.s - a.e123() * b.e12,
             a.s() * b.e12 + a.e12() * b.s - a.e23() * b.e31 + a.e31() * b.e23,
             a.s() * b.e23 + a.e12() * b.e31 + a.e23() * b.s - a.e31() * b.e12,
             a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12 + a.e31() * b.s,
@@ -453,6 +453,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
 }
 
 // ---- hand-written ----
+// Below: the products with SIMD kernels and the assigning operators.
 
 /// Geometric product `Multivector * Multivector -> Multivector`, all 64 terms of the Cayley
 /// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=native`) it is

@@ -36,9 +36,9 @@ impl<T: Scalar> BitOr<Bivector<T>> for Vector<T> {
         //   e3 · e23 = -e2, e3 · e31 = e1
         let a = self;
         Vector {
-            e1: -a.e2 * b.e12 + a.e3 * b.e31,
+            e1: a.e3 * b.e31 - a.e2 * b.e12,
             e2: a.e1 * b.e12 - a.e3 * b.e23,
-            e3: -a.e1 * b.e31 + a.e2 * b.e23,
+            e3: a.e2 * b.e23 - a.e1 * b.e31,
         }
     }
 }
@@ -53,8 +53,8 @@ impl<T: Scalar> BitOr<Vector<T>> for Bivector<T> {
         let a = self;
         Vector {
             e1: a.e12 * b.e2 - a.e31 * b.e3,
-            e2: -a.e12 * b.e1 + a.e23 * b.e3,
-            e3: -a.e23 * b.e2 + a.e31 * b.e1,
+            e2: a.e23 * b.e3 - a.e12 * b.e1,
+            e3: a.e31 * b.e1 - a.e23 * b.e2,
         }
     }
 }
@@ -134,9 +134,9 @@ impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
         let a = self;
         Multivector::new(
             a.e1 * b.e1() + a.e2 * b.e2() + a.e3 * b.e3(),
-            -a.e2 * b.e12() + a.e3 * b.e31(),
+            a.e3 * b.e31() - a.e2 * b.e12(),
             a.e1 * b.e12() - a.e3 * b.e23(),
-            -a.e1 * b.e31() + a.e2 * b.e23(),
+            a.e2 * b.e23() - a.e1 * b.e31(),
             a.e3 * b.e123(),
             a.e1 * b.e123(),
             a.e2 * b.e123(),
@@ -155,8 +155,8 @@ impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
         Multivector::new(
             -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
             a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
-            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
-            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            a.e23 * b.e3() - a.e12 * b.e1() - a.e31 * b.e123(),
+            a.e31 * b.e1() - a.e12 * b.e123() - a.e23 * b.e2(),
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -195,8 +195,8 @@ impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
         Multivector::new(
             -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
             a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
-            -a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
-            -a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
+            a.e23 * b.e3() - a.e12 * b.e1() - a.e31 * b.e123(),
+            a.e31 * b.e1() - a.e12 * b.e123() - a.e23 * b.e2(),
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -215,8 +215,8 @@ impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
         Multivector::new(
             a.e1() * b.e1 + a.e2() * b.e2 + a.e3() * b.e3,
             a.e12() * b.e2 - a.e31() * b.e3,
-            -a.e12() * b.e1 + a.e23() * b.e3,
-            -a.e23() * b.e2 + a.e31() * b.e1,
+            a.e23() * b.e3 - a.e12() * b.e1,
+            a.e31() * b.e1 - a.e23() * b.e2,
             a.e123() * b.e3,
             a.e123() * b.e1,
             a.e123() * b.e2,
@@ -234,9 +234,9 @@ impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
         let a = self;
         Multivector::new(
             -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
-            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e3() * b.e31 - a.e2() * b.e12 - a.e123() * b.e23,
             a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
-            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            a.e2() * b.e23 - a.e1() * b.e31 - a.e123() * b.e12,
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -274,9 +274,9 @@ impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
         let a = self;
         Multivector::new(
             -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
-            -a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
+            a.e3() * b.e31 - a.e2() * b.e12 - a.e123() * b.e23,
             a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
-            -a.e1() * b.e31 + a.e2() * b.e23 - a.e123() * b.e12,
+            a.e2() * b.e23 - a.e1() * b.e31 - a.e123() * b.e12,
             T::ZERO,
             T::ZERO,
             T::ZERO,
@@ -298,14 +298,14 @@ impl<T: Scalar> BitOr<Multivector<T>> for Multivector<T> {
                 - a.e23() * b.e23()
                 - a.e31() * b.e31()
                 - a.e123() * b.e123(),
-            -a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2()
+            a.e3() * b.e31() - a.e2() * b.e12() + a.e12() * b.e2()
                 - a.e23() * b.e123()
                 - a.e31() * b.e3()
                 - a.e123() * b.e23(),
             a.e1() * b.e12() - a.e3() * b.e23() - a.e12() * b.e1() + a.e23() * b.e3()
                 - a.e31() * b.e123()
                 - a.e123() * b.e31(),
-            -a.e1() * b.e31() + a.e2() * b.e23() - a.e12() * b.e123() - a.e23() * b.e2()
+            a.e2() * b.e23() - a.e1() * b.e31() - a.e12() * b.e123() - a.e23() * b.e2()
                 + a.e31() * b.e1()
                 - a.e123() * b.e12(),
             a.e3() * b.e123() + a.e123() * b.e3(),

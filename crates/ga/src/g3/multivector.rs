@@ -38,6 +38,15 @@ impl<T: Scalar> Multivector<T> {
     pub(crate) fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
         Self { c: core::array::from_fn(|k| f(self.c[k], other.c[k])) }
     }
+    /// [`is_finite`](Multivector::is_finite) without branches: `x - x` is 0 for finite `x`
+    /// and NaN otherwise, and a sum with a NaN is NaN.
+    #[inline(always)]
+    pub(crate) fn all_finite(self) -> bool {
+        // `x * 0` would do too; clippy's eq_op does not know that `x - x` is not always zero.
+        #[allow(clippy::eq_op)]
+        let z = self.c.map(|x| x - x);
+        ((z[0] + z[4]) + (z[1] + z[5])) + ((z[2] + z[6]) + (z[3] + z[7])) == T::ZERO
+    }
     /// The components with their blade names, in the report's order.
     #[inline(always)]
     pub(crate) fn terms(self) -> impl IntoIterator<Item = (T, &'static str)> {
@@ -345,30 +354,36 @@ impl<T: Scalar> Multivector<T> {
     /// `1 + e12 + e123`.
     #[must_use]
     pub fn inverse(self) -> Option<Self> {
-        let (s, e1, e2, e3) = (self.s(), self.e1(), self.e2(), self.e3());
-        let (e12, e23, e31, e123) = (self.e12(), self.e23(), self.e31(), self.e123());
-        // ⟨A Ā⟩₀ = s² - |v|² + |B|² - t²; ⟨A Ā⟩₃ = 2 (s t - v·B*), with B* = (e23, e31, e12).
-        let alpha =
-            s * s - e1 * e1 - e2 * e2 - e3 * e3 + e12 * e12 + e23 * e23 + e31 * e31 - e123 * e123;
-        let beta = T::TWO * (s * e123 - e1 * e23 - e2 * e31 - e3 * e12);
-        let d = (alpha * alpha + beta * beta).recip();
-        if !(d.is_finite() && d > T::ZERO) {
-            return None;
-        }
-        // Ā (c + d I) with c = α/|z|², d = -β/|z|²; Ā = (s, -v, -B, t), and X I maps
-        // 1 → e123, e1 → e23, e2 → e31, e3 → e12, e12 → -e3, e23 → -e1, e31 → -e2, e123 → -1.
-        let (c, d) = (alpha * d, -beta * d);
-        let inv = Self::new(
-            s * c - e123 * d,
-            -e1 * c + e23 * d,
-            -e2 * c + e31 * d,
-            -e3 * c + e12 * d,
-            -e12 * c - e3 * d,
-            -e23 * c - e1 * d,
-            -e31 * c - e2 * d,
-            e123 * c + s * d,
-        );
-        inv.is_finite().then_some(inv)
+        // Lane by lane on the storage order 1, e1, e2, e12, e3, e31, e23, e123 (the bitmask
+        // order, see `geometric`), where multiplying by I pairs slot l with slot 7 - l: written
+        // this way the whole inverse vectorises.
+        let a = self.c;
+        let signed = |x: T, negate: bool| if negate { -x } else { x };
+        // α = ⟨A Ā⟩₀ = s² - |v|² + |B|² - t²: minus on the vectors and on I.
+        const ALPHA_NEG: [bool; 8] = [false, true, true, false, true, false, false, true];
+        // β = ⟨A Ā⟩₃ = 2 (s t - v·B*) with B* = (e23, e31, e12): twice the sum over l < 4 of
+        // ±a_l a_(7-l).
+        const BETA_NEG: [bool; 8] = [false, true, true, true, true, true, true, false];
+        // Summed as trees (lanes, then halves) so the optimiser can keep them in vector registers
+        // instead of one long chain of dependent adds.
+        let p: [T; 8] = core::array::from_fn(|l| signed(a[l], ALPHA_NEG[l]) * a[l]);
+        let q: [T; 4] = core::array::from_fn(|l| signed(a[l], BETA_NEG[l]) * a[7 - l]);
+        let alpha = ((p[0] + p[4]) + (p[1] + p[5])) + ((p[2] + p[6]) + (p[3] + p[7]));
+        let beta = T::TWO * ((q[0] + q[2]) + (q[1] + q[3]));
+        let n = alpha * alpha + beta * beta;
+        // A⁻¹ = Ā (c + d I) with c = α/|z|², d = -β/|z|². Ā negates grades 1 and 2; X I maps
+        // 1 → e123, e1 → e23, e2 → e31, e3 → e12, e12 → -e3, e23 → -e1, e31 → -e2, e123 → -1,
+        // so lane l of Ā I is ±a_(7-l): CROSS_NEG is the sign of both steps together.
+        const CONJ_NEG: [bool; 8] = [false, true, true, true, true, true, true, false];
+        const CROSS_NEG: [bool; 8] = [true, false, false, true, false, true, true, false];
+        let r = n.recip();
+        let (c, d) = (alpha * r, -beta * r);
+        let inv = Self {
+            c: core::array::from_fn(|l| {
+                signed(a[l], CONJ_NEG[l]).mul_add(c, signed(a[7 - l], CROSS_NEG[l]) * d)
+            }),
+        };
+        (n > T::ZERO && n < T::INFINITY && inv.all_finite()).then_some(inv)
     }
 
     /// The versor inverse `Ã / (A Ã)`, valid only when `A` is a versor (a product of

@@ -25,7 +25,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Vector<T> {
         Bivector {
             e12: a.e1 * b.e2 - a.e2 * b.e1,
             e23: a.e2 * b.e3 - a.e3 * b.e2,
-            e31: -a.e1 * b.e3 + a.e3 * b.e1,
+            e31: a.e3 * b.e1 - a.e1 * b.e3,
         }
     }
 }
@@ -66,7 +66,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
             a.e3 * b.s(),
             a.e1 * b.e2() - a.e2 * b.e1(),
             a.e2 * b.e3() - a.e3 * b.e2(),
-            -a.e1 * b.e3() + a.e3 * b.e1(),
+            a.e3 * b.e1() - a.e1 * b.e3(),
             a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
         )
     }
@@ -137,7 +137,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
             a.s() * b.e3,
             a.e1() * b.e2 - a.e2() * b.e1,
             a.e2() * b.e3 - a.e3() * b.e2,
-            -a.e1() * b.e3 + a.e3() * b.e1,
+            a.e3() * b.e1 - a.e1() * b.e3,
             a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
         )
     }

@@ -26,8 +26,8 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Bivector<T> {
         let a = self;
         Vector {
             e1: a.e12 * b.e31 - a.e31 * b.e12,
-            e2: -a.e12 * b.e23 + a.e23 * b.e12,
-            e3: -a.e23 * b.e31 + a.e31 * b.e23,
+            e2: a.e23 * b.e12 - a.e12 * b.e23,
+            e3: a.e31 * b.e23 - a.e23 * b.e31,
         }
     }
 }
@@ -139,8 +139,8 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
         Multivector::new(
             a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
             a.e12 * b.e31() - a.e31 * b.e12(),
-            -a.e12 * b.e23() + a.e23 * b.e12(),
-            -a.e23 * b.e31() + a.e31 * b.e23(),
+            a.e23 * b.e12() - a.e12 * b.e23(),
+            a.e31 * b.e23() - a.e23 * b.e31(),
             a.e12 * b.e123(),
             a.e23 * b.e123(),
             a.e31 * b.e123(),
@@ -179,8 +179,8 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
         Multivector::new(
             a.s * b.e123() + a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
             a.e12 * b.e31() - a.e31 * b.e12(),
-            -a.e12 * b.e23() + a.e23 * b.e12(),
-            -a.e23 * b.e31() + a.e31 * b.e23(),
+            a.e23 * b.e12() - a.e12 * b.e23(),
+            a.e31 * b.e23() - a.e23 * b.e31(),
             a.e12 * b.e123(),
             a.e23 * b.e123(),
             a.e31 * b.e123(),
@@ -219,8 +219,8 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
         Multivector::new(
             a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12,
             a.e12() * b.e31 - a.e31() * b.e12,
-            -a.e12() * b.e23 + a.e23() * b.e12,
-            -a.e23() * b.e31 + a.e31() * b.e23,
+            a.e23() * b.e12 - a.e12() * b.e23,
+            a.e31() * b.e23 - a.e23() * b.e31,
             a.e123() * b.e12,
             a.e123() * b.e23,
             a.e123() * b.e31,
@@ -259,8 +259,8 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
         Multivector::new(
             a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12 + a.e123() * b.s,
             a.e12() * b.e31 - a.e31() * b.e12,
-            -a.e12() * b.e23 + a.e23() * b.e12,
-            -a.e23() * b.e31 + a.e31() * b.e23,
+            a.e23() * b.e12 - a.e12() * b.e23,
+            a.e31() * b.e23 - a.e23() * b.e31,
             a.e123() * b.e12,
             a.e123() * b.e23,
             a.e123() * b.e31,
