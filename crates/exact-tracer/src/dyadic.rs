@@ -12,6 +12,7 @@ use core::cmp::Ordering;
 use core::ops::{Add, Mul, Neg, Sub};
 
 use num_bigint::{BigInt, Sign as BigSign};
+use num_integer::Integer;
 
 use crate::Sign;
 
@@ -114,7 +115,7 @@ impl Dyadic {
         } else {
             b <<= shift_amount(-scale);
         }
-        let (quotient, remainder) = (&a / &b, &a % &b);
+        let (quotient, remainder) = a.div_rem(&b);
         // 2^54 <= quotient < 2^56, so it fits in a u64 with room for one more bit. Appending
         // the sticky bit below it makes the u64 -> f64 conversion (which rounds to nearest,
         // ties to even, as IEEE 754 requires) round exactly as the true quotient would: the
