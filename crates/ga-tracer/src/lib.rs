@@ -65,10 +65,10 @@
 
 #![deny(missing_docs)]
 
-mod plucker;
-mod precomputed;
+pub mod plucker;
+pub mod precomputed;
 mod real;
-mod report;
+pub mod report;
 
 pub use plucker::{GaPlucker, PluckerPrim, PluckerRay};
 pub use precomputed::{Ga, GaPrim};
