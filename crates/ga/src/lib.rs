@@ -69,8 +69,16 @@
 //!   `(x, y, z) = -(e23, e31, e12)`: the same rotation as glam's right-handed `Quat`.
 //! - **Scalars.** Every type is generic over [`Scalar`], implemented for `f32` and `f64` only.
 //!
-//! The optional `glam` feature adds conversions to and from glam's `Vec3`, `Vec3A`, `DVec3`,
-//! `Quat` and `DQuat`.
+//! # The `glam` feature
+//!
+//! Adds `From` conversions between [`g3::Vector`] and glam's `Vec3`, `Vec3A` (f32) and `DVec3`
+//! (f64), component-wise, and between [`g3::Rotor`] and `Quat` (f32) and `DQuat` (f64) by
+//! `w = s`, `(x, y, z) = -(e23, e31, e12)`. The quaternion units are the negated basis
+//! bivectors `i = -e23`, `j = -e31`, `k = -e12` (check: `i j = e23 e31 = -e12 = k`); a rotor
+//! about the unit axis `n` is `cos(θ/2) - (n I) sin(θ/2)` with `n I = n1 e23 + n2 e31 + n3 e12`,
+//! and glam's quaternion is `cos(θ/2) + (n1 i + n2 j + n3 k) sin(θ/2)`. Both rotate
+//! right-handedly about `n`, so `Rotor::rotate` and `Quat * Vec3` agree, and so do products in
+//! the same order (tested).
 
 #![deny(missing_docs)]
 

@@ -59,6 +59,7 @@ impl From<Vector<f64>> for DVec3 {
     }
 }
 
+/// The same rotation: `s = w`, `(e23, e31, e12) = -(x, y, z)` (see the crate docs).
 impl From<Quat> for Rotor<f32> {
     #[inline]
     fn from(q: Quat) -> Self {
@@ -66,6 +67,7 @@ impl From<Quat> for Rotor<f32> {
     }
 }
 
+/// The same rotation: `w = s`, `(x, y, z) = -(e23, e31, e12)` (see the crate docs).
 impl From<Rotor<f32>> for Quat {
     #[inline]
     fn from(r: Rotor<f32>) -> Self {
@@ -73,6 +75,7 @@ impl From<Rotor<f32>> for Quat {
     }
 }
 
+/// The same rotation: `s = w`, `(e23, e31, e12) = -(x, y, z)` (see the crate docs).
 impl From<DQuat> for Rotor<f64> {
     #[inline]
     fn from(q: DQuat) -> Self {
@@ -80,6 +83,7 @@ impl From<DQuat> for Rotor<f64> {
     }
 }
 
+/// The same rotation: `w = s`, `(x, y, z) = -(e23, e31, e12)` (see the crate docs).
 impl From<Rotor<f64>> for DQuat {
     #[inline]
     fn from(r: Rotor<f64>) -> Self {
