@@ -28,6 +28,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::Context as _;
+use ga_tracer::{Ga, GaPlucker, GaReport};
 use intersect::Intersector;
 use la_tracer::{MollerTrumbore, Watertight};
 use render::output::AtomicFile;
@@ -43,6 +44,12 @@ pub enum Backend {
     La,
     /// glam, Moller-Trumbore kernel.
     LaMt,
+    /// geometric algebra, the report's method with the per-triangle part precomputed.
+    Ga,
+    /// geometric algebra, the report's method step by step, as written.
+    GaReport,
+    /// geometric algebra, watertight edge tests as trivectors (Plucker-like).
+    GaPlucker,
 }
 
 /// The precision of rays, triangles and kernels (`--precision`).
@@ -84,6 +91,9 @@ pub fn dispatch<J: Job>(backend: Backend, precision: Precision, job: J) -> J::Ou
         Backend::LaMt => {
             either(f64, job, MollerTrumbore::<f32>::new(), MollerTrumbore::<f64>::new())
         }
+        Backend::Ga => either(f64, job, Ga::<f32>::new(), Ga::<f64>::new()),
+        Backend::GaReport => either(f64, job, GaReport::<f32>::new(), GaReport::<f64>::new()),
+        Backend::GaPlucker => either(f64, job, GaPlucker::<f32>::new(), GaPlucker::<f64>::new()),
     }
 }
 
@@ -352,5 +362,14 @@ mod tests {
         assert_eq!(dispatch(Backend::La, Precision::F64, Probe), ("la", 53));
         assert_eq!(dispatch(Backend::LaMt, Precision::F32, Probe), ("la-mt", 24));
         assert_eq!(dispatch(Backend::LaMt, Precision::F64, Probe), ("la-mt", 53));
+        assert_eq!(dispatch(Backend::Ga, Precision::F32, Probe), ("ga", 24));
+        assert_eq!(dispatch(Backend::GaReport, Precision::F64, Probe), ("ga-report", 53));
+        assert_eq!(dispatch(Backend::GaPlucker, Precision::F32, Probe), ("ga-plucker", 24));
+        // Each variant's --backend name is its kernel's NAME.
+        use clap::ValueEnum as _;
+        for b in Backend::value_variants() {
+            let name = b.to_possible_value().unwrap().get_name().to_owned();
+            assert_eq!(dispatch(*b, Precision::F64, Probe).0, name);
+        }
     }
 }
