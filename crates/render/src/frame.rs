@@ -89,6 +89,18 @@ pub enum FrameError {
         /// Requested height.
         height: u32,
     },
+    /// [`Frame::from_data`] was given a number of values other than `width * height`.
+    #[error("{found} pixel values for a {width}x{height} image ({expected} expected)")]
+    Length {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+        /// `width * height`.
+        expected: usize,
+        /// Values given.
+        found: usize,
+    },
     /// The memory for the image could not be reserved.
     #[error("cannot allocate {bytes} bytes for a {width}x{height} {what}")]
     OutOfMemory {
@@ -154,8 +166,8 @@ impl Frame {
     ///
     /// # Errors
     ///
-    /// As [`Frame::new`] for the size; [`FrameError::TooLarge`] also when the number of
-    /// values is not `width * height`.
+    /// As [`Frame::new`] for the size; [`FrameError::Length`] when the number of values is
+    /// not `width * height`.
     pub fn from_data(width: u32, height: u32, data: FrameData) -> Result<Self, FrameError> {
         let n = pixel_count(width, height)?;
         let len = match &data {
@@ -165,7 +177,7 @@ impl Frame {
             FrameData::Prim(v) => v.len(),
         };
         if len != n {
-            return Err(FrameError::TooLarge { width, height });
+            return Err(FrameError::Length { width, height, expected: n, found: len });
         }
         Ok(Self { width, height, data })
     }
@@ -387,7 +399,10 @@ mod tests {
         let f = Frame::new(Mode::Prim, 3, 2).unwrap();
         assert_eq!((f.width(), f.height(), f.mode()), (3, 2, Mode::Prim));
         assert_eq!(f.data(), &FrameData::Prim(vec![u32::MAX; 6]));
-        assert!(Frame::from_data(3, 2, FrameData::Alpha(vec![0; 5])).is_err());
+        assert_eq!(
+            Frame::from_data(3, 2, FrameData::Alpha(vec![0; 5])),
+            Err(FrameError::Length { width: 3, height: 2, expected: 6, found: 5 })
+        );
     }
 
     #[test]
