@@ -1,9 +1,9 @@
 //! Geometric algebra for the wedge ray tracers.
 //!
 //! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade and hand-expanded
-//! products; [`reference`](mod@reference) is a generic (slow, obviously correct) Clifford algebra the fast
-//! kernels are tested against; [`errata`] lists what the report this project starts from gets
-//! wrong and what the code does instead.
+//! products; [`reference`](mod@reference) is a generic (slow, obviously correct) Clifford
+//! algebra the fast kernels are tested against; [`errata`] lists what the report this project
+//! starts from gets wrong and what the code does instead.
 //!
 //! ```
 //! use ga::g3::{Bivector, Multivector, Rotor, Vector};
@@ -49,8 +49,9 @@
 //!
 //!   Left and right contractions, the scalar product and the commutator are methods of
 //!   [`g3::Multivector`] (`left_contraction`, `right_contraction`, `scalar_product`,
-//!   `commutator`). Note Rust's precedence: `*` binds tighter than `^`, which binds tighter
-//!   than `|`, so write `(a ^ b) | c` with parentheses.
+//!   `commutator`). Rust's precedence is fixed: `*` and `/` bind tighter than `+` and `-`, then
+//!   come `&`, `^` and `|`, in that order. So `a + b ^ c` is `(a + b) ^ c`, not the usual
+//!   mathematical reading `a + (b ∧ c)`: write the parentheses.
 //! - **Inner product.** `|` is the report's (figure 2.7, Hestenes' inner product): for an
 //!   `r`-blade and an `s`-blade, the grade `|r - s|` part of the geometric product, and zero
 //!   when either side is a scalar. It is not the left contraction (which scales by scalars and
