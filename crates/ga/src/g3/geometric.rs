@@ -452,8 +452,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
     }
 }
 
-// ---- hand-written ----
-// Below: the products with SIMD kernels and the assigning operators.
+// The products with SIMD kernels, and the assigning operators.
 
 /// Geometric product `Multivector * Multivector -> Multivector`, all 64 terms of the Cayley
 /// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=native`) it is
