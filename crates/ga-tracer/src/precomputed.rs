@@ -62,10 +62,12 @@
 //!
 //! # Cost per test
 //!
-//! 3 subtractions (`s`), 2 inner products (`den`, `num`), the distance test, `q` (3 multiplies,
-//! 3 fused multiply-adds), 2 inner products (`U`, `V`), the edge test; inner products use fused
-//! multiply-adds (1 multiply, 2 FMAs each). 21 arithmetic operations in all, 12 before the first
-//! branch. One division, only for a hit.
+//! Counting a fused multiply-add as one operation: `s`, 3 subtractions; `den` and `num`, two
+//! inner products of 3 each; the distance test, 2 multiplies (`t_max |den|`, the slack below)
+//! and 2 comparisons; `q`, 3 multiplies and 3 multiply-adds; `U` and `V`, two inner products;
+//! the edge test, 1 addition and 3 comparisons. The sign flips `σx` are bit operations.
+//! 24 arithmetic operations in all, 11 before the distance test (Moller-Trumbore: 27
+//! operations and a reciprocal). One division, only for a hit.
 //!
 //! # Not watertight
 //!

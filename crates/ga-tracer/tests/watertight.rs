@@ -126,10 +126,9 @@ fn report<I: Intersector + Default>() {
     for (offset, place) in [(0.0, "at the origin"), (1e3 * N as f64, "1e3 grid sizes away")] {
         let [edges, vertices] = cracks::<I>(0x6a_2001, offset, RAYS);
         let half = RAYS / 2;
-        eprintln!(
-            "{}, {place}: missed {edges} of {half} rays through shared edges, {vertices} of {half} through shared vertices",
-            label::<I>()
-        );
+        let name = label::<I>();
+        eprintln!("{name}, {place}: rays missed: {edges} of {half} through shared edges,");
+        eprintln!("    {vertices} of {half} through shared vertices");
     }
 }
 
