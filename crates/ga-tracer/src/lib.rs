@@ -40,16 +40,16 @@
 //!
 //! | | [`GaReport`] (`"ga-report"`) | [`Ga`] (`"ga"`) | [`GaPlucker`] (`"ga-plucker"`) |
 //! |---|---|---|---|
-//! | What it is | the report's steps as written, with [`ga::g3::geometry`]'s `Plane`, `Line` and the report's three edge tests | the same mathematics, per-triangle part precomputed | edge tests as trivectors `((vi - o) ∧ (vj - o)) ∧ u` |
+//! | What it is | the report's steps as written, with [`ga::g3::geometry`]'s `Plane`, `Line` and the report's three edge tests | the same mathematics, per-triangle part precomputed | edge tests as the trivectors `((vi - o) ∧ (vj - o)) ∧ u` |
 //! | Shared edges and vertices | not watertight | not watertight | **watertight**: a ray through a shared edge or vertex hits at least one of the triangles, given identical vertex values in both |
 //! | Edges | closed | closed | closed |
 //! | Faces | both | both | both |
 //! | Degenerate triangles | never hit (zero area decided exactly at `prepare`, see [`is_degenerate`]) | never hit (same) | never hit (same) |
 //! | NaN or infinite input | miss, no panic | miss, no panic | miss, no panic |
 //! | Per triangle | 3 vertices: 36 B (`f32`), 72 B (`f64`) | `a`, unit normal `n`, reciprocal frame `m_b`, `m_c`: 48 B, 96 B | 3 vertices and the unit normal: 48 B, 96 B |
-//! | Per ray | nothing | nothing | `u⁻¹` and an error-bound factor |
-//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector: 24 operations (a fused multiply-add counted once); one division, for hits only | translation, rejection from the ray, 3 edge trivectors, an error bound: about 90 operations; one division, for hits only |
-//! | Rare slow path | none | none | exact signs (`orient3d`) for edge values within rounding of 0 |
+//! | Per ray | nothing | nothing | an orthonormal basis of the plane orthogonal to the ray (a square root, 2 divisions) |
+//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector: 24 operations (a fused multiply-add counted once); one division, for hits only | 3 translated vertices, their coordinates in the plane orthogonal to the ray, 3 edge values of 3 operations: about 45 operations; one division, for hits only |
+//! | Rare slow path | none | none | exact signs (`orient2d`) when an edge value is exactly 0 |
 //! | `t` measured from | the world origin (loses about 3 digits at `1e3` scene sizes from it) | vertex `a` (one rounded subtraction `a - o`) | vertex `a`, as [`Ga`] |
 //!
 //! Speeds are measured by the criterion benches in `benches/`, not here.

@@ -15,8 +15,9 @@ pub(crate) mod private {
     /// over this trait alone, so `T::ZERO` and friends name [`ga::Scalar`]'s items without
     /// ambiguity (`intersect::Real` has items of the same names).
     pub trait Float: ga::Scalar {
-        /// The smallest positive normal number.
-        const MIN_POSITIVE: Self;
+        /// `1` or `-1` times `|self|`, with the sign of `sign` (its sign bit, so `-0.0`
+        /// counts as negative).
+        fn copy_sign(self, sign: Self) -> Self;
 
         /// `self`, negated when `sign_of` has its sign bit set: `x * sign(s)` without a
         /// multiply or a branch (one AND and one XOR of the bit patterns).
@@ -31,7 +32,10 @@ pub(crate) mod private {
     macro_rules! impl_float {
         ($t:ident, $bits:ident) => {
             impl Float for $t {
-                const MIN_POSITIVE: Self = $t::MIN_POSITIVE;
+                #[inline(always)]
+                fn copy_sign(self, sign: Self) -> Self {
+                    self.copysign(sign)
+                }
 
                 #[inline(always)]
                 fn xor_sign(self, sign_of: Self) -> Self {

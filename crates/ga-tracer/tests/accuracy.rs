@@ -10,10 +10,14 @@ use intersect::{Intersector, Ray, Real, Triangle};
 /// Half-width of the band around the edges, in barycentric units, where a kernel may decide
 /// differently from the exact answer, for rays at least 10% off grazing (the band widens as
 /// `1 / cos` below that). The report's method is the widest: its hit point is computed from
-/// a plane offset measured from the world origin, and the edge tests see its rounding.
+/// a plane offset measured from the world origin, and the edge tests see its rounding. The
+/// watertight kernel's edge values come from the raw vertices seen along the ray, so thin
+/// triangles widen its band; [`ga_tracer::Ga`] has that conditioning folded into its
+/// precomputed reciprocal frame.
 fn edge_band<I: Intersector>() -> f64 {
     match (I::NAME, is_f32::<I::Real>()) {
         ("ga-report", true) => 2e-4,
+        ("ga-plucker", true) => 1e-4,
         (_, true) => 2e-5,
         (_, false) => 5e-14,
     }
