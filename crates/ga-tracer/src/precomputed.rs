@@ -135,11 +135,16 @@ impl<T: GaReal> GaPrim<T> {
             return Self { a, n: Vector::ZERO, m_b: Vector::ZERO, m_c: Vector::ZERO };
         }
         let [a64, b64, c64] = tri.vertices().map(|p| Vector::from_array(p.map(to_f64)));
+        // N = (b - a) ∧ (c - a), the report's B before normalisation.
         let bivector = (b64 - a64) ^ (c64 - a64);
-        // N⁻¹ = N / (N | N); for a blade N N = N | N = -|N|².
+        // N⁻¹ = N / (N | N): for a blade, N N = N | N = -|N|².
         let inverse = bivector * (bivector | bivector).recip();
+        // The plane ((x - a) ∧ N)* = 0 is (x - a) · N* = 0: its unit dual normal.
         let n = bivector.dual() * bivector.norm().recip();
+        // Edge c -> a: (a - c) ∧ (p - c) = λb N, so λb = ((a - c) ∧ (p - c)) | N⁻¹
+        // = (p - c) · (N⁻¹ | (a - c)) = (p - a) · m_b.
         let m_b = inverse | (a64 - c64);
+        // Edge a -> b: (b - a) ∧ (p - a) = λc N, so λc = (p - a) · (N⁻¹ | (b - a)).
         let m_c = inverse | (b64 - a64);
         let round = |v: Vector<f64>| Vector::from_array(v.to_array().map(ga::Scalar::from_f64));
         Self { a, n: round(n), m_b: round(m_b), m_c: round(m_c) }
@@ -246,4 +251,52 @@ fn hit_distance_ok<T: Float>(t: T, t_max: T) -> bool {
 #[inline(always)]
 fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
     x.e1.mul_add(y.e1, x.e2.mul_add(y.e2, x.e3 * y.e3))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_pcg::Pcg64;
+
+    /// `m_b`, `m_c` are the reciprocal frame of the edges `b - a`, `c - a` (so `(p - a) · m`
+    /// are the barycentrics of `b` and `c`) and `n` is the unit normal, for random triangles.
+    #[test]
+    fn prim_holds_the_reciprocal_frame_and_the_unit_normal() {
+        let mut rng = Pcg64::seed_from_u64(0x6a_4001);
+        for _ in 0..10_000 {
+            let mut p = || [0; 3].map(|_| rng.random_range(-10.0..10.0));
+            let tri = Triangle::new(p(), p(), p());
+            let prim = GaPrim::<f64>::new(&tri);
+            let [a, b, c] = tri.vertices().map(Vector::from_array);
+            let (e1, e2) = (b - a, c - a);
+            // Conditioning: thin triangles make the frame long.
+            let scale = e1.norm() * e2.norm() / (e1 ^ e2).norm();
+            let tol = 1e-13 * scale * scale;
+            for (x, want) in [
+                (prim.m_b | e1, 1.0),
+                (prim.m_b | e2, 0.0),
+                (prim.m_c | e1, 0.0),
+                (prim.m_c | e2, 1.0),
+                (prim.m_b | prim.n, 0.0),
+                (prim.m_c | prim.n, 0.0),
+            ] {
+                assert!((x - want).abs() <= tol, "{x} vs {want} for {tri:?}");
+            }
+            assert!((prim.n.norm() - 1.0).abs() <= 1e-15);
+            assert!(
+                (prim.n | e1).abs() <= 1e-14 * e1.norm()
+                    && (prim.n | e2).abs() <= 1e-14 * e2.norm()
+            );
+            // Right-handed with the vertex order: n points to where (b - a) x (c - a) does.
+            assert!((prim.n | e1.cross(e2)) > 0.0);
+        }
+    }
+
+    #[test]
+    fn degenerate_triangles_get_a_zero_frame() {
+        let tri = Triangle::new([1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [3.0, 6.0, 9.0]);
+        let prim = GaPrim::<f32>::new(&tri.cast());
+        assert_eq!((prim.n, prim.m_b, prim.m_c), (Vector::ZERO, Vector::ZERO, Vector::ZERO));
+    }
 }
