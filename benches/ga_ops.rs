@@ -20,7 +20,16 @@
 //!
 //! Run: `cargo bench -p wedge-benches --bench ga_ops`. With `WEDGE_BENCH_QUICK=1` every
 //! benchmark runs for a few milliseconds and the CSV goes to the criterion directory instead
-//! of `results/` (a smoke test, not a measurement).
+//! of `results/` (a smoke test, not a measurement); so does a run filtered to some benchmarks.
+//!
+//! **Loop alignment.** The loops measured here are a handful of instructions; where the linker
+//! happens to place one across a 64-byte boundary it can take an extra cycle per iteration
+//! (seen here: `Rotor::reverse` and `Quat::inverse` compile to the same five instructions, and
+//! the copy that straddled a boundary measured 2x slower). The recorded figures therefore come
+//! from a build that aligns every loop:
+//! `RUSTFLAGS="-C target-cpu=native -C llvm-args=-align-loops=64" cargo bench -p wedge-benches
+//! --bench ga_ops` (`RUSTFLAGS` replaces the rustflags of `.cargo/config.toml`, hence the
+//! repeated `target-cpu`).
 
 use std::hint::black_box;
 use std::time::{Duration, SystemTime};
@@ -317,11 +326,8 @@ fn main() {
     let started = SystemTime::now();
     // On CPU time a benchmark takes longer in wall time when the machine is busy, so the full
     // run keeps criterion's sample count but shortens its default 3 s + 5 s per benchmark.
-    let (warm_up, measurement) = if quick_mode() {
-        bench_times()
-    } else {
-        (Duration::from_secs(1), Duration::from_secs(3))
-    };
+    let (warm_up, measurement) =
+        if quick_mode() { bench_times() } else { (Duration::from_secs(1), Duration::from_secs(3)) };
     let mut criterion = Criterion::default()
         .with_measurement(BenchClock::from_env())
         .warm_up_time(warm_up)
@@ -351,8 +357,15 @@ fn main() {
     if rows.is_empty() {
         return;
     }
-    let path =
-        if quick_mode() { dir.join("ga_ops.quick.csv") } else { results_dir().join("ga_ops.csv") };
+    // Only a full, non-quick run replaces results/ga_ops.csv: a run filtered to a few benchmarks
+    // (`cargo bench ... -- rotor`) would otherwise drop the other rows.
+    let path = if quick_mode() {
+        dir.join("ga_ops.quick.csv")
+    } else if rows.len() < specs.len() {
+        dir.join("ga_ops.partial.csv")
+    } else {
+        results_dir().join("ga_ops.csv")
+    };
     write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
     println!("\n{:<32} {:>5} {:>9} {:>9} {:>7}  target", "op", "prec", "ga ns", "glam ns", "ratio");
     for row in &rows {
