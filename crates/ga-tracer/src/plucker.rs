@@ -61,10 +61,10 @@
 //!    subtracts separately: a fused multiply-add would round the two orders differently.
 //! 2. **Shared vertices: exact signs.** Antisymmetry alone is not enough at a vertex, where
 //!    all the edges meeting there give values near 0: consistent but wrong signs around a fan
-//!    can leave a crack. A 3D evaluation of `(sa ∧ sb) ∧ u`, even after rejecting the
-//!    vertices from `u`, did: about 1.5% of the rays aimed exactly at vertices of the tile
-//!    grid in `tests/watertight.rs` passed through, in `f32` and `f64`, though none of those
-//!    aimed at edges. Here the sign is exact: rounding is monotonic, so `xa yb > ya xb`
+//!    can leave a crack. An earlier version that evaluated `(sa ∧ sb) ∧ u` with the 3D outer
+//!    products (exactly antisymmetric too, but with rounded signs) did: about 1.5% of the
+//!    rays aimed exactly at vertices of the tile grid in `tests/watertight.rs` passed
+//!    through, in `f32` and `f64`, though none of those aimed at edges. Here the sign is exact: rounding is monotonic, so `xa yb > ya xb`
 //!    implies `fl(xa yb) >= fl(ya xb)`, and a non-zero computed difference has the exact sign
 //!    of `xa yb - ya xb` for the rounded coordinates. An exact zero may hide either sign, so
 //!    then all three values are recomputed exactly (Shewchuk's adaptive `orient2d`, on
