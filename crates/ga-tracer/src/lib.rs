@@ -56,12 +56,24 @@
 //!
 //! # Accuracy
 //!
-//! Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`. The tests check `t` to a
-//! relative `1e-5` (`f32`) and `1e-12` (`f64`) against an independent `f64` solver for
-//! well-conditioned rays, and that the hit/miss decision agrees with it except within a thin
-//! band around the edges (measured in the tests). [`Ga`] and [`GaPlucker`] decide on undivided
-//! values and divide once; their barycentrics satisfy `u, v >= 0` and `u + v <= 1` up to the
-//! rounding of that division.
+//! Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`. [`Ga`] and [`GaPlucker`]
+//! decide on undivided values and divide once; their barycentrics satisfy `u, v >= 0` and
+//! `u + v <= 1` up to the rounding of that division.
+//!
+//! `tests/accuracy.rs` compares every kernel with an independent `f64` solver on 40,000 random
+//! triangles and rays (half of them aimed within `1e-2` to `1e-15` of an edge), for rays at
+//! least 10% off grazing (errors grow as `1 / cos` below that). Measured maxima:
+//!
+//! | | `ga-report` | `ga` | `ga-plucker` |
+//! |---|---|---|---|
+//! | hit/miss disagrees only within, of an edge (barycentric units), `f32` | `5e-5` | `6e-6` | `3e-5` |
+//! | the same, `f64` | `4e-15` | `2e-14` | `3e-14` |
+//! | relative error of `t`, `f32` / `f64` | `9e-6` / `2e-14` | `1e-6` / `2e-14` | `1e-6` / `2e-14` |
+//! | relative error of `t` at `1e3` scene sizes from the origin, `f32` / `f64` | `3e-3` / `4e-12` | `8e-7` / `7e-15` | `8e-7` / `7e-15` |
+//!
+//! `ga-plucker` computes its edge values from the raw vertices seen along the ray, so a thin
+//! triangle widens its band in `f32`; `ga` has that conditioning folded into its precomputed
+//! reciprocal frame.
 
 #![deny(missing_docs)]
 
