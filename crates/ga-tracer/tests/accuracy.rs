@@ -19,7 +19,7 @@ fn edge_band<I: Intersector>() -> f64 {
         ("ga-report", true) => 2e-4,
         ("ga-plucker", true) => 1e-4,
         (_, true) => 2e-5,
-        (_, false) => 5e-14,
+        (_, false) => 1e-13,
     }
 }
 
