@@ -16,6 +16,8 @@
 
 #![deny(missing_docs)]
 
+pub mod throughput;
+
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};

@@ -4,9 +4,13 @@
 use std::time::{Duration, Instant};
 
 use intersect::{Hit, Intersector, Ray, Triangle};
+use rayon::prelude::*;
 
-use crate::bvh::{Aabb, Bvh};
+use crate::bvh::Bvh;
 use crate::scene::Mesh;
+
+/// Scenes with at least this many triangles prepare them in parallel.
+const PARALLEL_PREPARE: usize = 16384;
 
 /// Sizes and build times of an [`Accel`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -17,7 +21,7 @@ pub struct AccelStats {
     pub nodes: usize,
     /// Number of BVH leaves.
     pub leaves: usize,
-    /// Depth of the deepest leaf (root = 0).
+    /// Nodes on the longest path from the root to a leaf.
     pub depth: usize,
     /// Time to compute the boxes and build the BVH.
     pub bvh_build: Duration,
@@ -63,25 +67,29 @@ pub struct Accel<I: Intersector> {
 }
 
 impl<I: Intersector> Accel<I> {
-    /// Builds the BVH over `triangles` and prepares each triangle for `intersector`.
+    /// Builds the BVH over `triangles` and prepares each triangle for `intersector`, in
+    /// parallel on rayon's current thread pool when there are many triangles.
     ///
     /// Triangles should have finite coordinates (the loader guarantees it): a triangle with
     /// NaN coordinates may be skipped by the BVH even where the kernel would report a hit.
     ///
     /// # Panics
     ///
-    /// If there are more than `u32::MAX` triangles.
+    /// If there are more than [`MAX_SLOTS`](crate::bvh::MAX_SLOTS) (2^28) triangles.
     #[must_use]
     pub fn build(intersector: I, triangles: &[Triangle<I::Real>]) -> Self {
         let start = Instant::now();
-        let boxes: Vec<Aabb<I::Real>> = triangles.iter().map(Aabb::of_triangle).collect();
-        let bvh = Bvh::build(&boxes);
-        drop(boxes);
+        let bvh = Bvh::from_triangles(triangles);
         let bvh_build = start.elapsed();
 
         let start = Instant::now();
+        let prepare_one = |&i: &u32| intersector.prepare(&triangles[i as usize]);
         let prims: Vec<I::Prim> =
-            bvh.order().iter().map(|&i| intersector.prepare(&triangles[i as usize])).collect();
+            if triangles.len() >= PARALLEL_PREPARE && rayon::current_num_threads() > 1 {
+                bvh.order().par_iter().map(prepare_one).collect()
+            } else {
+                bvh.order().iter().map(prepare_one).collect()
+            };
         let prepare = start.elapsed();
 
         let stats = AccelStats {
@@ -154,13 +162,12 @@ impl<I: Intersector> Accel<I> {
         let order = self.bvh.order();
         let mut best: Option<Hit<I::Real>> = None;
         self.bvh.closest(ray, t_max, |slots, limit| {
-            for slot in slots {
+            let first = slots.start;
+            for (k, prim) in self.prims[slots].iter().enumerate() {
                 // The kernel reports `t <= limit`: equal distances come through so that
                 // `nearer_than` can pick the lower index whatever the visiting order.
-                if let Some(h) =
-                    self.intersector.intersect(&self.prims[slot], ray, &ray_data, *limit)
-                {
-                    let hit = Hit::new(order[slot], h);
+                if let Some(h) = self.intersector.intersect(prim, ray, &ray_data, *limit) {
+                    let hit = Hit::new(order[first + k], h);
                     if best.is_none_or(|b| hit.nearer_than(&b)) {
                         best = Some(hit);
                         *limit = hit.t;
@@ -177,9 +184,7 @@ impl<I: Intersector> Accel<I> {
     pub fn any_hit(&self, ray: &Ray<I::Real>, t_max: I::Real) -> bool {
         let ray_data = self.intersector.prepare_ray(ray);
         self.bvh.any(ray, t_max, |slots| {
-            slots
-                .into_iter()
-                .any(|slot| self.intersector.occludes(&self.prims[slot], ray, &ray_data, t_max))
+            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &ray_data, t_max))
         })
     }
 

@@ -1,0 +1,539 @@
+//! The build: binned SAH splits, grouped eight at a time into wide nodes, subtrees in parallel.
+//!
+//! Each set of primitives is *planned* once, when it is made: binned along all three axes
+//! ([`BINS`] bins over the centroid bounds, fewer for small sets) to find its cheapest SAH
+//! split, or marked a leaf. A wide node starts as one planned set and repeatedly splits the
+//! child with the largest surface area (the one a ray is most likely to enter) until it has
+//! [`WIDTH`] children or none is worth splitting (Wald et al., "Getting Rid of Packets", 2008;
+//! what Embree's builders do). Children that are not leaves become wide nodes in turn. Every
+//! primitive is binned and partitioned once per binary split above it, as in a binary build,
+//! and no binary tree is ever stored.
+//!
+//! The build works in `f32` whatever the tree's precision: every primitive box is rounded
+//! outwards to `f32` first ([`PrimRef::new`]), so one code path, four-lane SIMD throughout,
+//! serves both precisions, and the node boxes it produces are `f32` anyway. Subtrees of at
+//! least [`PARALLEL_MIN`] primitives are built in parallel on rayon's current pool, each into
+//! its own node array, then appended with their node references shifted.
+
+use rayon::prelude::*;
+
+use intersect::Real;
+
+use super::aabb::Aabb;
+use super::node::{Node, WIDTH, f32_down, f32_up, leaf_ref};
+use super::simd::F4;
+use super::{BINS, MAX_DEPTH, MAX_LEAF, PAD_ULPS};
+
+/// SAH cost of one binary split's traversal, relative to one primitive test.
+const TRAVERSAL_COST: f64 = 1.0;
+
+/// Sets at least this large build their children in parallel (when the pool has threads).
+pub const PARALLEL_MIN: usize = 8192;
+
+/// A primitive during the build: its box rounded outwards to `f32` and its original index,
+/// stored in lane 3 of `lo` (bit for bit; an index below 2^28 is a small positive float, never
+/// a NaN, and lane 3 is ignored by everything that reads the box). 32 bytes, moved around by
+/// partitioning so that each set's primitives are contiguous.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(16))]
+pub struct PrimRef {
+    lo: [f32; 4],
+    hi: [f32; 4],
+}
+
+impl PrimRef {
+    /// The reference of primitive `index` with box `b`.
+    #[inline]
+    pub fn new<T: Real>(b: &Aabb<T>, index: u32) -> Self {
+        let [x, y, z] = b.min.map(|v| f32_down(v.to_f64()));
+        let [u, v, w] = b.max.map(|v| f32_up(v.to_f64()));
+        Self { lo: [x, y, z, f32::from_bits(index)], hi: [u, v, w, 0.0] }
+    }
+
+    /// The original index.
+    #[inline(always)]
+    pub fn index(&self) -> u32 {
+        self.lo[3].to_bits()
+    }
+
+    #[inline(always)]
+    fn lo(&self) -> F4 {
+        F4::new(self.lo)
+    }
+
+    #[inline(always)]
+    fn hi(&self) -> F4 {
+        F4::new(self.hi)
+    }
+
+    /// Twice the box centre: binning needs only an affine image of the centroid.
+    #[inline(always)]
+    fn centroid2(&self) -> F4 {
+        self.lo().add(self.hi())
+    }
+}
+
+/// What a set needs to know of its primitives: the union of their boxes and the bounds of
+/// their doubled centroids. Primitives with NaN coordinates add nothing.
+#[derive(Clone, Copy, Debug)]
+pub struct Info {
+    lo: F4,
+    hi: F4,
+    clo: F4,
+    chi: F4,
+}
+
+impl Info {
+    fn empty() -> Self {
+        let (inf, ninf) = (F4::splat(f32::INFINITY), F4::splat(f32::NEG_INFINITY));
+        Self { lo: inf, hi: ninf, clo: inf, chi: ninf }
+    }
+
+    #[inline(always)]
+    fn add(&mut self, r: &PrimRef) {
+        let c = r.centroid2();
+        self.lo = self.lo.min(r.lo());
+        self.hi = self.hi.max(r.hi());
+        self.clo = self.clo.min(c);
+        self.chi = self.chi.max(c);
+    }
+
+    fn merge(mut self, other: Self) -> Self {
+        self.lo = self.lo.min(other.lo);
+        self.hi = self.hi.max(other.hi);
+        self.clo = self.clo.min(other.clo);
+        self.chi = self.chi.max(other.chi);
+        self
+    }
+
+    /// The description of `refs`, computed in parallel chunks when there are many.
+    pub fn of(refs: &[PrimRef]) -> Self {
+        if refs.len() >= PARALLEL_MIN && rayon::current_num_threads() > 1 {
+            return refs
+                .par_chunks(PARALLEL_MIN)
+                .map(Self::of_sequential)
+                .reduce(Self::empty, Self::merge);
+        }
+        Self::of_sequential(refs)
+    }
+
+    fn of_sequential(refs: &[PrimRef]) -> Self {
+        let mut info = Self::empty();
+        for r in refs {
+            info.add(r);
+        }
+        info
+    }
+
+    /// The box, `(lower corner, upper corner)`.
+    fn bounds(&self) -> ([f32; 3], [f32; 3]) {
+        let (lo, hi) = (self.lo.to_array(), self.hi.to_array());
+        ([lo[0], lo[1], lo[2]], [hi[0], hi[1], hi[2]])
+    }
+
+    /// Half the surface area of the box, in `f64` (0 if empty).
+    fn half_area(&self) -> f64 {
+        let (lo, hi) = self.bounds();
+        half_area(lo, hi)
+    }
+}
+
+/// Half the surface area of the box `[lo, hi]` in `f64` (0 if empty).
+fn half_area(lo: [f32; 3], hi: [f32; 3]) -> f64 {
+    if !(0..3).all(|k| lo[k] <= hi[k]) {
+        return 0.0;
+    }
+    let [x, y, z]: [f64; 3] = core::array::from_fn(|k| f64::from(hi[k]) - f64::from(lo[k]));
+    x * y + y * z + z * x
+}
+
+/// The box of a node lane for a set with bounds `[lo, hi]`: grown by [`PAD_ULPS`] units in
+/// the last place of precision `T` of its largest coordinate magnitude, then rounded outwards
+/// to `f32` (see the module documentation of [`super`] for why). The empty box stays empty.
+pub fn lane_box<T: Real>(lo: [f32; 3], hi: [f32; 3]) -> ([f32; 3], [f32; 3]) {
+    if !(0..3).all(|k| lo[k] <= hi[k]) {
+        return ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+    }
+    let magnitude =
+        (0..3).fold(0.0f64, |m, k| m.max(f64::from(lo[k]).abs()).max(f64::from(hi[k]).abs()));
+    let pad = magnitude * T::EPSILON.to_f64() * f64::from(PAD_ULPS);
+    (lo.map(|x| f32_down(f64::from(x) - pad)), hi.map(|x| f32_up(f64::from(x) + pad)))
+}
+
+/// Maps (doubled) centroids to `count` bins per axis.
+#[derive(Clone, Copy, Debug)]
+struct Binning {
+    min: F4,
+    scale: F4,
+    count: usize,
+}
+
+impl Binning {
+    fn new(info: &Info, count: usize) -> Self {
+        let (lo, hi) = (info.clo.to_array(), info.chi.to_array());
+        // Slightly under count / extent, so that the largest centroid lands in the last bin
+        // (the clamp in `bins` catches what rounding still pushes over); 0 for a flat axis
+        // (everything in bin 0).
+        let scale: [f32; 4] = core::array::from_fn(|k| {
+            let extent = hi[k] - lo[k];
+            if k < 3 && extent > 0.0 && extent.is_finite() {
+                count as f32 * (1.0 - 1e-6) / extent
+            } else {
+                0.0
+            }
+        });
+        Self { min: info.clo, scale: F4::new(scale), count }
+    }
+
+    /// The bins of `r` along x, y, z (lane 3: junk).
+    #[inline(always)]
+    fn bins(&self, r: &PrimRef) -> [u32; 4] {
+        r.centroid2().sub(self.min).mul(self.scale).bins(self.count as i32 - 1)
+    }
+}
+
+/// What to do with a set.
+#[derive(Clone, Copy, Debug)]
+enum Plan {
+    /// Make it a leaf.
+    Leaf,
+    /// Split it: bins `0..=bin` of `binning` along `axis` go left.
+    Sah { axis: usize, bin: u32, binning: Binning },
+    /// Split it at the median centroid along `axis` (SAH unusable or not allowed).
+    Median { axis: usize },
+}
+
+/// A planned set: `refs[start..end]` of the slice being built, its description, its plan and
+/// the number of binary splits above it.
+#[derive(Clone, Copy, Debug)]
+struct Set {
+    start: usize,
+    end: usize,
+    info: Info,
+    plan: Plan,
+    depth: usize,
+}
+
+impl Set {
+    fn new(refs: &[PrimRef], start: usize, end: usize, info: Info, depth: usize) -> Self {
+        let plan = plan(&refs[start..end], &info, depth);
+        Self { start, end, info, plan, depth }
+    }
+
+    fn len(&self) -> usize {
+        self.end - self.start
+    }
+}
+
+/// One SAH bin: the union of its primitives' boxes and their number.
+#[derive(Clone, Copy)]
+struct Bin {
+    lo: F4,
+    hi: F4,
+    count: u32,
+}
+
+/// Decides whether `refs` (described by `info`, `depth` splits below the root) becomes a leaf
+/// or is split, and how.
+fn plan(refs: &[PrimRef], info: &Info, depth: usize) -> Plan {
+    let n = refs.len();
+    if n == 1 {
+        return Plan::Leaf;
+    }
+    let (clo, chi) = (info.clo.to_array(), info.chi.to_array());
+    let extent: [f32; 3] = core::array::from_fn(|k| chi[k] - clo[k]);
+    let widest = (1..3).fold(0, |a, k| if extent[k] > extent[a] { k } else { a });
+    let median = || if n > MAX_LEAF { Plan::Median { axis: widest } } else { Plan::Leaf };
+    // SAH is allowed only while a fall-back to median splits (which halve the count) from
+    // each child can still finish above MAX_DEPTH.
+    let sah_allowed = depth + 1 + ceil_log2(n) < MAX_DEPTH;
+    let flat = !extent.iter().any(|&e| e > 0.0);
+    if !sah_allowed || flat {
+        return median();
+    }
+    let area = info.half_area();
+    match best_split(refs, info) {
+        Some((plan, cost)) => {
+            let split_cost = if area > 0.0 { TRAVERSAL_COST + cost / area } else { TRAVERSAL_COST };
+            if n > MAX_LEAF || split_cost < n as f64 { plan } else { Plan::Leaf }
+        }
+        // Every axis put all centroids in one bin (possible only with extents so small that
+        // binning cannot separate them).
+        None => median(),
+    }
+}
+
+/// The cheapest binned SAH split over all axes and its cost `n_l A_l + n_r A_r` (half areas);
+/// `None` if no axis has two non-empty sides. Small sets use fewer bins.
+fn best_split(refs: &[PrimRef], info: &Info) -> Option<(Plan, f64)> {
+    let count = BINS.min(refs.len());
+    let binning = Binning::new(info, count);
+    let empty = Bin { lo: F4::splat(f32::INFINITY), hi: F4::splat(f32::NEG_INFINITY), count: 0 };
+    let mut bins = [[empty; BINS]; 3];
+    for r in refs {
+        let b = binning.bins(r);
+        let (lo, hi) = (r.lo(), r.hi());
+        for (axis, bins) in bins.iter_mut().enumerate() {
+            let bin = &mut bins[b[axis] as usize];
+            bin.lo = bin.lo.min(lo);
+            bin.hi = bin.hi.max(hi);
+            bin.count += 1;
+        }
+    }
+    let box_of = |lo: F4, hi: F4| {
+        let (lo, hi) = (lo.to_array(), hi.to_array());
+        half_area([lo[0], lo[1], lo[2]], [hi[0], hi[1], hi[2]])
+    };
+    let mut best: Option<(Plan, f64)> = None;
+    let mut right_cost = [0.0f64; BINS];
+    let scale = binning.scale.to_array();
+    for (axis, bins) in bins.iter().enumerate() {
+        if scale[axis] == 0.0 {
+            continue;
+        }
+        let bins = &bins[..count];
+        // Right-to-left sweep: cost of everything right of each boundary (-1: nothing).
+        let (mut lo, mut hi) = (F4::splat(f32::INFINITY), F4::splat(f32::NEG_INFINITY));
+        let mut on_right = 0u32;
+        for i in (1..count).rev() {
+            (lo, hi) = (lo.min(bins[i].lo), hi.max(bins[i].hi));
+            on_right += bins[i].count;
+            right_cost[i - 1] =
+                if on_right > 0 { f64::from(on_right) * box_of(lo, hi) } else { -1.0 };
+        }
+        let (mut lo, mut hi) = (F4::splat(f32::INFINITY), F4::splat(f32::NEG_INFINITY));
+        let mut on_left = 0u32;
+        for (i, bin) in bins[..count - 1].iter().enumerate() {
+            (lo, hi) = (lo.min(bin.lo), hi.max(bin.hi));
+            on_left += bin.count;
+            if on_left == 0 || right_cost[i] < 0.0 {
+                continue;
+            }
+            let cost = f64::from(on_left) * box_of(lo, hi) + right_cost[i];
+            if best.is_none_or(|(_, c)| cost < c) {
+                best = Some((Plan::Sah { axis, bin: i as u32, binning }, cost));
+            }
+        }
+    }
+    best
+}
+
+/// Splits `refs` as `plan` says; returns the size of the left side and both descriptions.
+fn split(refs: &mut [PrimRef], plan: Plan) -> (usize, Info, Info) {
+    match plan {
+        Plan::Sah { axis, bin, binning } => partition(refs, |r| binning.bins(r)[axis] <= bin),
+        Plan::Median { axis } => {
+            let mid = refs.len() / 2;
+            refs.select_nth_unstable_by(mid, |a, b| {
+                a.centroid2().to_array()[axis].total_cmp(&b.centroid2().to_array()[axis])
+            });
+            (mid, Info::of(&refs[..mid]), Info::of(&refs[mid..]))
+        }
+        Plan::Leaf => unreachable!("leaves are never split"),
+    }
+}
+
+/// Moves the primitives satisfying `left` to the front; returns how many there are and the
+/// descriptions of both sides, gathered on the way (each primitive is looked at once).
+fn partition(refs: &mut [PrimRef], mut left: impl FnMut(&PrimRef) -> bool) -> (usize, Info, Info) {
+    let (mut l, mut r) = (Info::empty(), Info::empty());
+    let mut i = 0;
+    let mut j = refs.len();
+    while i < j {
+        if left(&refs[i]) {
+            l.add(&refs[i]);
+            i += 1;
+        } else {
+            r.add(&refs[i]);
+            j -= 1;
+            refs.swap(i, j);
+        }
+    }
+    (i, l, r)
+}
+
+/// Builds the tree over `refs` (described by `info`) into `out`, whose first node is the
+/// root. The root is always a node, even for a single leaf.
+pub fn build<T: Real>(refs: &mut [PrimRef], info: Info) -> Vec<Node> {
+    let mut out = Vec::with_capacity(refs.len() / 4 + 1);
+    let root = Set::new(refs, 0, refs.len(), info, 0);
+    if matches!(root.plan, Plan::Leaf) {
+        let mut node = Node::EMPTY;
+        let (lo, hi) = root.info.bounds();
+        let (lo, hi) = lane_box::<T>(lo, hi);
+        node.set(0, lo, hi, leaf_ref(0, refs.len()));
+        out.push(node);
+    } else {
+        node_into::<T>(&mut out, refs, 0, root);
+    }
+    out
+}
+
+/// Builds the wide node for `set` (planned to be split; `refs` is the slice its range refers
+/// to, starting at slot `base`) and its subtrees into `out`; returns the node's index in `out`.
+fn node_into<T: Real>(out: &mut Vec<Node>, refs: &mut [PrimRef], base: usize, set: Set) -> u32 {
+    // Open the largest splittable child until the node is full.
+    let mut kids = [set; WIDTH];
+    let mut len = 1;
+    while len < WIDTH {
+        let mut pick: Option<(usize, f64)> = None;
+        for (i, kid) in kids[..len].iter().enumerate() {
+            if !matches!(kid.plan, Plan::Leaf) {
+                let area = kid.info.half_area();
+                if pick.is_none_or(|(_, a)| area > a) {
+                    pick = Some((i, area));
+                }
+            }
+        }
+        let Some((i, _)) = pick else { break };
+        let kid = kids[i];
+        let (mid, left, right) = split(&mut refs[kid.start..kid.end], kid.plan);
+        let mid = kid.start + mid;
+        kids[i] = Set::new(refs, kid.start, mid, left, kid.depth + 1);
+        kids[len] = Set::new(refs, mid, kid.end, right, kid.depth + 1);
+        len += 1;
+    }
+    let kids = &mut kids[..len];
+
+    let index = out.len();
+    out.push(Node::EMPTY);
+    for (lane, kid) in kids.iter().enumerate() {
+        let (lo, hi) = kid.info.bounds();
+        let (lo, hi) = lane_box::<T>(lo, hi);
+        let r =
+            if matches!(kid.plan, Plan::Leaf) { leaf_ref(base + kid.start, kid.len()) } else { 0 };
+        out[index].set(lane, lo, hi, r);
+    }
+
+    let parallel = set.len() >= PARALLEL_MIN && rayon::current_num_threads() > 1;
+    if !parallel {
+        for (lane, kid) in kids.iter().enumerate() {
+            if !matches!(kid.plan, Plan::Leaf) {
+                let local = Set { start: 0, end: kid.len(), ..*kid };
+                let child =
+                    node_into::<T>(out, &mut refs[kid.start..kid.end], base + kid.start, local);
+                out[index].refs[lane] = child;
+            }
+        }
+        return index as u32;
+    }
+
+    // Parallel: cut `refs` into the children's disjoint slices, build each interior child
+    // into its own array, then append them with their references shifted.
+    let mut order: Vec<usize> = (0..kids.len()).collect();
+    order.sort_unstable_by_key(|&lane| kids[lane].start);
+    let mut jobs = Vec::with_capacity(kids.len());
+    let mut rest = refs;
+    let mut consumed = 0;
+    for lane in order {
+        let kid = kids[lane];
+        let (_, tail) = rest.split_at_mut(kid.start - consumed);
+        let (mine, tail) = tail.split_at_mut(kid.len());
+        rest = tail;
+        consumed = kid.end;
+        if !matches!(kid.plan, Plan::Leaf) {
+            jobs.push((lane, mine, Set { start: 0, end: kid.len(), ..kid }, base + kid.start));
+        }
+    }
+    let built: Vec<(usize, Vec<Node>)> = jobs
+        .into_par_iter()
+        .map(|(lane, slice, local, slot)| {
+            let mut nodes = Vec::with_capacity(slice.len() / 4 + 1);
+            node_into::<T>(&mut nodes, slice, slot, local);
+            (lane, nodes)
+        })
+        .collect();
+    for (lane, mut nodes) in built {
+        let offset = out.len() as u32;
+        for node in &mut nodes {
+            for r in &mut node.refs {
+                if !super::node::is_leaf(*r) {
+                    *r += offset;
+                }
+            }
+        }
+        out.append(&mut nodes);
+        out[index].refs[lane] = offset;
+    }
+    index as u32
+}
+
+/// `ceil(log2(n))` for `n >= 1`.
+fn ceil_log2(n: usize) -> usize {
+    (usize::BITS - (n - 1).leading_zeros()) as usize
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ceil_log2_values() {
+        assert_eq!([1, 2, 3, 4, 5, 8, 9].map(ceil_log2), [0, 1, 2, 2, 3, 3, 4]);
+    }
+
+    fn refs_along_x(n: u32) -> Vec<PrimRef> {
+        (0..n)
+            .map(|i| {
+                let x = f64::from(i);
+                PrimRef::new(&Aabb { min: [x, 0.0, 0.0], max: [x, 1.0, 2.0] }, i)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn partition_keeps_every_element_and_describes_both_sides() {
+        let mut v = refs_along_x(100);
+        let (mid, l, r) = partition(&mut v, |p| p.index() % 3 == 0);
+        assert_eq!(mid, 34);
+        assert!(v[..mid].iter().all(|p| p.index() % 3 == 0));
+        assert!(v[mid..].iter().all(|p| p.index() % 3 != 0));
+        assert_eq!((l.bounds().0[0], l.bounds().1[0]), (0.0, 99.0));
+        assert_eq!((r.bounds().0[0], r.bounds().1[0]), (1.0, 98.0));
+        // Doubled centroids: z from 0 + 2.
+        assert_eq!(
+            (l.clo.to_array()[2], l.chi.to_array()[2], r.clo.to_array()[0]),
+            (2.0, 2.0, 2.0)
+        );
+        let mut idx: Vec<u32> = v.iter().map(PrimRef::index).collect();
+        idx.sort_unstable();
+        assert_eq!(idx, (0..100).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn f64_boxes_are_rounded_outwards() {
+        let b = Aabb { min: [0.1f64, -0.1, 1e-50], max: [0.3, 1e300, 2.0] };
+        let r = PrimRef::new(&b, 7);
+        for k in 0..3 {
+            assert!(f64::from(r.lo[k]) <= b.min[k] && f64::from(r.hi[k]) >= b.max[k]);
+        }
+        assert_eq!(r.index(), 7);
+    }
+
+    #[test]
+    fn sah_splits_two_clusters_apart() {
+        let mut v: Vec<PrimRef> = (0..64)
+            .map(|i| {
+                let x = if i % 2 == 0 { 0.0 } else { 100.0 } + f64::from(i) * 0.01;
+                PrimRef::new(&Aabb { min: [x, 0.0, 0.0], max: [x + 0.1, 0.1, 0.1] }, i)
+            })
+            .collect();
+        let info = Info::of(&v);
+        let plan = plan(&v, &info, 0);
+        assert!(matches!(plan, Plan::Sah { axis: 0, .. }), "{plan:?}");
+        let (mid, l, r) = split(&mut v, plan);
+        assert_eq!(mid, 32);
+        assert!(l.bounds().1[0] < 1.0 && r.bounds().0[0] > 99.0);
+    }
+
+    #[test]
+    fn lane_boxes_grow_outwards_and_empty_stays_empty() {
+        let (lo, hi) = lane_box::<f32>([1.0, -3.0, 0.0], [2.0, 1e6, 0.0]);
+        assert!(lo[0] < 1.0 && lo[1] < -3.0 && lo[2] < 0.0);
+        assert!(hi[0] > 2.0 && hi[1] > 1e6 && hi[2] > 0.0);
+        let (lo, hi) = lane_box::<f64>([1.0; 3], [1.0; 3]);
+        assert!(lo.iter().all(|&x| x < 1.0) && hi.iter().all(|&x| x > 1.0));
+        let (lo, hi) = lane_box::<f64>([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+        assert!(lo[0] > hi[0]);
+    }
+}

@@ -1,0 +1,447 @@
+//! Traversal: a ray prepared once (origin, inverse direction, which face of each slab it
+//! enters first), eight child boxes tested at a time, nearest child first, a fixed stack.
+//!
+//! The box test runs in the ray's precision: `f32` rays test the `f32` planes as they are,
+//! `f64` rays convert them to `f64` (exactly) and test in `f64`. With AVX2 (the build enables
+//! it with `-C target-cpu=native` on machines that have it) eight boxes take twelve vector
+//! subtractions and multiplications, six minima and maxima and one compare; without, the same
+//! arithmetic runs lane by lane.
+
+use core::mem::MaybeUninit;
+use core::ops::{Mul, Range, Sub};
+
+use intersect::{Ray, Real};
+
+use super::MAX_DEPTH;
+use super::aabb::{max_or, min_or};
+use super::node::{Node, WIDTH, is_leaf, leaf_slots};
+
+/// Entries of the traversal stack: at most `WIDTH - 1` siblings wait per level of the path.
+const STACK: usize = (WIDTH - 1) * MAX_DEPTH + 1;
+
+/// `1 + 2 gamma(3)` with `gamma(n) = n u / (1 - n u)` and `u = eps / 2`: the factor by which a
+/// slab distance `(plane - origin) * inv_dir` may be too small (Ize 2013).
+const fn ize_factor(eps: f64) -> f64 {
+    let u = eps * 0.5;
+    let gamma3 = 3.0 * u / (1.0 - 3.0 * u);
+    1.0 + 2.0 * gamma3
+}
+
+/// The distance type of a traversal: `f32` or `f64`, the ray's precision.
+pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
+    /// 0.
+    const ZERO: Self;
+    /// [`ize_factor`] rounded up to this precision (rounding may lose half an ulp; one more
+    /// ulp keeps it an upper bound).
+    const SLACK: Self;
+    /// From an `f64` that holds a value of the tree's precision (exact).
+    fn from_f64(x: f64) -> Self;
+    /// A sort key, increasing with the value for values `>= 0`, with 3 low bits free.
+    fn key(self) -> u64;
+    /// The lanes of `node` whose box `ray` meets within `(0, limit]` (bit `i` for lane `i`),
+    /// conservatively, and their entry distances in `t`.
+    fn hits(node: &Node, ray: &Prepared<Self>, limit: Self, t: &mut [Self; WIDTH]) -> u32;
+}
+
+/// A ray prepared for box tests in precision `S`.
+#[derive(Clone, Copy, Debug)]
+pub struct Prepared<S> {
+    origin: [S; 3],
+    inv_dir: [S; 3],
+    /// The plane row (see [`Node::planes`]) the ray enters through along each axis.
+    near: [usize; 3],
+    /// The plane row it leaves through.
+    far: [usize; 3],
+}
+
+impl<S: Lane> Prepared<S> {
+    /// `None` for a ray with a non-finite coordinate: it meets nothing.
+    #[inline(always)]
+    pub fn new<T: Real>(ray: &Ray<T>) -> Option<Self> {
+        if !ray.origin.iter().chain(&ray.dir).all(|x| x.is_finite()) {
+            return None;
+        }
+        // A zero component gives +-inf, with the sign of the zero: the slab then either holds
+        // the whole ray or none of it.
+        let inv = ray.dir.map(|d| T::ONE / d);
+        // Decided on the inverse so that -0.0 (inverse -inf) counts as negative.
+        let negative = inv.map(|d| d < T::ZERO);
+        Some(Self {
+            origin: ray.origin.map(|x| S::from_f64(x.to_f64())),
+            inv_dir: inv.map(|x| S::from_f64(x.to_f64())),
+            near: core::array::from_fn(|k| if negative[k] { k + 3 } else { k }),
+            far: core::array::from_fn(|k| if negative[k] { k } else { k + 3 }),
+        })
+    }
+
+    /// Lane-by-lane box test, for machines without AVX2 (and the tests).
+    #[cfg_attr(
+        all(target_arch = "x86_64", target_feature = "avx2"),
+        allow(dead_code, reason = "with AVX2 only the tests use it, as the reference")
+    )]
+    #[inline(always)]
+    fn hits_scalar(&self, node: &Node, limit: S, t: &mut [S; WIDTH]) -> u32
+    where
+        S: From<f32>,
+    {
+        let mut mask = 0;
+        for (lane, t) in t.iter_mut().enumerate() {
+            let mut near = S::ZERO;
+            let mut far = limit;
+            for k in 0..3 {
+                let lo = S::from(node.planes[self.near[k]][lane]);
+                let hi = S::from(node.planes[self.far[k]][lane]);
+                // `max_or`/`min_or` ignore a NaN distance (0 * inf: the ray lies in the face
+                // plane), so such a slab constrains nothing.
+                near = max_or(near, (lo - self.origin[k]) * self.inv_dir[k]);
+                far = min_or(far, (hi - self.origin[k]) * self.inv_dir[k]);
+            }
+            *t = near;
+            mask |= u32::from(near <= far * S::SLACK) << lane;
+        }
+        mask
+    }
+}
+
+impl Lane for f32 {
+    const ZERO: f32 = 0.0;
+    const SLACK: f32 = ize_factor(f32::EPSILON as f64) as f32 + f32::EPSILON;
+    #[inline(always)]
+    fn from_f64(x: f64) -> f32 {
+        x as f32
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        u64::from(self.to_bits()) << 3
+    }
+    #[inline(always)]
+    fn hits(node: &Node, ray: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+        #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+        {
+            avx2::hits_f32(node, ray, limit, t)
+        }
+        #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+        {
+            ray.hits_scalar(node, limit, t)
+        }
+    }
+}
+
+impl Lane for f64 {
+    const ZERO: f64 = 0.0;
+    const SLACK: f64 = ize_factor(f64::EPSILON) + f64::EPSILON;
+    #[inline(always)]
+    fn from_f64(x: f64) -> f64 {
+        x
+    }
+    #[inline(always)]
+    fn key(self) -> u64 {
+        self.to_bits() & !7
+    }
+    #[inline(always)]
+    fn hits(node: &Node, ray: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+        #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+        {
+            avx2::hits_f64(node, ray, limit, t)
+        }
+        #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+        {
+            ray.hits_scalar(node, limit, t)
+        }
+    }
+}
+
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+mod avx2 {
+    //! The box tests with AVX2. Operand order matters: `max_ps(a, b)` and `min_ps(a, b)`
+    //! return `b` when either is NaN, so a NaN slab distance (first operand) leaves the
+    //! running bound (second operand) as it was, as `max_or`/`min_or` do.
+
+    use core::arch::x86_64::*;
+
+    use super::{Lane, Node, Prepared, WIDTH};
+
+    #[inline(always)]
+    fn plane(node: &Node, row: usize) -> __m256 {
+        // SAFETY: AVX is enabled (see above); a row is 8 f32, 32-byte aligned (`Node` is, and
+        // rows are 32 bytes).
+        unsafe { _mm256_load_ps(node.planes[row].as_ptr()) }
+    }
+
+    #[inline(always)]
+    pub fn hits_f32(node: &Node, r: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+        // SAFETY: this module is compiled only when the build enables AVX2; `t` holds the 8
+        // f32 of the unaligned store.
+        unsafe {
+            let mut near = _mm256_setzero_ps();
+            let mut far = _mm256_set1_ps(limit);
+            for k in 0..3 {
+                let o = _mm256_set1_ps(r.origin[k]);
+                let inv = _mm256_set1_ps(r.inv_dir[k]);
+                let tn = _mm256_mul_ps(_mm256_sub_ps(plane(node, r.near[k]), o), inv);
+                let tf = _mm256_mul_ps(_mm256_sub_ps(plane(node, r.far[k]), o), inv);
+                near = _mm256_max_ps(tn, near);
+                far = _mm256_min_ps(tf, far);
+            }
+            let far = _mm256_mul_ps(far, _mm256_set1_ps(f32::SLACK));
+            let inside = _mm256_cmp_ps::<_CMP_LE_OQ>(near, far);
+            _mm256_storeu_ps(t.as_mut_ptr(), near);
+            _mm256_movemask_ps(inside) as u32
+        }
+    }
+
+    #[inline(always)]
+    fn half(node: &Node, row: usize, high: bool) -> __m256d {
+        let offset = if high { 4 } else { 0 };
+        // SAFETY: AVX is enabled (see above); 4 of the row's 8 f32, 16-byte aligned (rows
+        // are 32-byte aligned).
+        unsafe { _mm256_cvtps_pd(_mm_load_ps(node.planes[row].as_ptr().add(offset))) }
+    }
+
+    #[inline(always)]
+    pub fn hits_f64(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+        let mut mask = 0;
+        for (h, high) in [false, true].into_iter().enumerate() {
+            // SAFETY: AVX2 is enabled (see above); `t` holds 8 f64, lanes 4h..4h+4 are in
+            // bounds of the unaligned store.
+            unsafe {
+                let mut near = _mm256_setzero_pd();
+                let mut far = _mm256_set1_pd(limit);
+                for k in 0..3 {
+                    let o = _mm256_set1_pd(r.origin[k]);
+                    let inv = _mm256_set1_pd(r.inv_dir[k]);
+                    let tn = _mm256_mul_pd(_mm256_sub_pd(half(node, r.near[k], high), o), inv);
+                    let tf = _mm256_mul_pd(_mm256_sub_pd(half(node, r.far[k], high), o), inv);
+                    near = _mm256_max_pd(tn, near);
+                    far = _mm256_min_pd(tf, far);
+                }
+                let far = _mm256_mul_pd(far, _mm256_set1_pd(f64::SLACK));
+                let inside = _mm256_cmp_pd::<_CMP_LE_OQ>(near, far);
+                _mm256_storeu_pd(t.as_mut_ptr().add(4 * h), near);
+                mask |= (_mm256_movemask_pd(inside) as u32) << (4 * h);
+            }
+        }
+        mask
+    }
+}
+
+/// A fixed-size stack that is never initialised as a whole (one ray pushes a few entries of
+/// its [`STACK`]: clearing them all would cost more than the pushes).
+struct Stack<E> {
+    items: [MaybeUninit<E>; STACK],
+    len: usize,
+}
+
+impl<E: Copy> Stack<E> {
+    #[inline(always)]
+    fn new() -> Self {
+        Self { items: [const { MaybeUninit::uninit() }; STACK], len: 0 }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, e: E) {
+        // Bounds-checked: the depth bound of the build makes overflow impossible, and a check
+        // is cheaper than trusting it.
+        self.items[self.len] = MaybeUninit::new(e);
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<E> {
+        self.len = self.len.checked_sub(1)?;
+        // SAFETY: entries below `len` were written by `push` and not popped since.
+        Some(unsafe { self.items[self.len].assume_init() })
+    }
+}
+
+/// Converts the tree's precision to the lane type (exact: they are the same precision).
+#[inline(always)]
+fn lane<S: Lane, T: Real>(x: T) -> S {
+    S::from_f64(x.to_f64())
+}
+
+/// See [`super::Bvh::closest`].
+#[inline(always)]
+pub fn closest<S, T, F>(nodes: &[Node], ray: &Ray<T>, t_max: T, mut leaf: F)
+where
+    S: Lane + From<f32>,
+    T: Real,
+    F: FnMut(Range<usize>, &mut T),
+{
+    if nodes.is_empty() {
+        return;
+    }
+    let Some(prepared) = Prepared::<S>::new(ray) else { return };
+    let mut stack: Stack<(u32, S)> = Stack::new();
+    let mut t = [S::ZERO; WIDTH];
+    let mut limit = t_max;
+    let mut current = 0u32;
+    loop {
+        if is_leaf(current) {
+            leaf(leaf_slots(current), &mut limit);
+        } else {
+            let node = &nodes[current as usize];
+            let mask = S::hits(node, &prepared, lane(limit), &mut t);
+            if mask != 0 {
+                let first = mask.trailing_zeros() as usize;
+                let rest = mask & (mask - 1);
+                if rest == 0 {
+                    current = node.refs[first];
+                    continue;
+                }
+                // Two or more: visit the nearest now, stack the others farthest first.
+                let mut keys = [0u64; WIDTH];
+                let mut n = 0;
+                let mut m = mask;
+                while m != 0 {
+                    let i = m.trailing_zeros() as usize;
+                    keys[n] = t[i].key() | i as u64;
+                    n += 1;
+                    m &= m - 1;
+                }
+                let keys = &mut keys[..n];
+                keys.sort_unstable();
+                for &key in keys[1..].iter().rev() {
+                    let i = (key & 7) as usize;
+                    stack.push((node.refs[i], t[i]));
+                }
+                current = node.refs[(keys[0] & 7) as usize];
+                continue;
+            }
+        }
+        // Pop until a child that still starts within the (possibly lowered) limit; one
+        // entered exactly at the limit is visited, so ties are resolved by the caller.
+        let bound = lane::<S, T>(limit) * S::SLACK;
+        loop {
+            let Some((r, t_entry)) = stack.pop() else { return };
+            if t_entry <= bound {
+                current = r;
+                break;
+            }
+        }
+    }
+}
+
+/// See [`super::Bvh::any`].
+#[inline(always)]
+pub fn any<S, T, F>(nodes: &[Node], ray: &Ray<T>, t_max: T, mut leaf: F) -> bool
+where
+    S: Lane + From<f32>,
+    T: Real,
+    F: FnMut(Range<usize>) -> bool,
+{
+    if nodes.is_empty() {
+        return false;
+    }
+    let Some(prepared) = Prepared::<S>::new(ray) else { return false };
+    let limit = lane(t_max);
+    let mut stack: Stack<u32> = Stack::new();
+    let mut t = [S::ZERO; WIDTH];
+    let mut current = 0u32;
+    loop {
+        if is_leaf(current) {
+            if leaf(leaf_slots(current)) {
+                return true;
+            }
+        } else {
+            let node = &nodes[current as usize];
+            let mut mask = S::hits(node, &prepared, limit, &mut t);
+            if mask != 0 {
+                current = node.refs[mask.trailing_zeros() as usize];
+                mask &= mask - 1;
+                while mask != 0 {
+                    stack.push(node.refs[mask.trailing_zeros() as usize]);
+                    mask &= mask - 1;
+                }
+                continue;
+            }
+        }
+        match stack.pop() {
+            Some(r) => current = r,
+            None => return false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bvh::node::leaf_ref;
+
+    fn node_with(boxes: &[([f32; 3], [f32; 3])]) -> Node {
+        let mut node = Node::EMPTY;
+        for (lane, (lo, hi)) in boxes.iter().enumerate() {
+            node.set(lane, *lo, *hi, leaf_ref(lane, 1));
+        }
+        node
+    }
+
+    /// The vector test (with AVX2) and the lane-by-lane test agree, and both match the
+    /// expected answers.
+    fn check<S: Lane + From<f32> + core::fmt::Debug>(ray: Ray<f64>, limit: f64, expect: u32) {
+        let unit = ([0.0f32, 0.0, 0.0], [1.0f32, 1.0, 1.0]);
+        let far = ([0.0f32, 0.0, 5.0], [1.0f32, 1.0, 6.0]);
+        let beside = ([2.0f32, 0.0, 0.0], [3.0f32, 1.0, 1.0]);
+        let node = node_with(&[unit, far, beside]);
+        let prepared = Prepared::<S>::new(&ray).unwrap();
+        let mut t = [S::ZERO; WIDTH];
+        let mut u = [S::ZERO; WIDTH];
+        let mask = S::hits(&node, &prepared, S::from_f64(limit), &mut t);
+        let scalar = prepared.hits_scalar(&node, S::from_f64(limit), &mut u);
+        assert_eq!(mask, expect, "{ray:?} {limit}");
+        assert_eq!(scalar, expect, "{ray:?} {limit}");
+        for lane in 0..WIDTH {
+            if mask >> lane & 1 == 1 {
+                assert!(t[lane] == u[lane], "{:?} {:?}", t[lane], u[lane]);
+            }
+        }
+    }
+
+    #[test]
+    fn eight_wide_box_test() {
+        for (ray, limit, expect) in [
+            // Up the z axis through the unit box and the far box.
+            (Ray::new([0.5, 0.5, -1.0], [0.0, 0.0, 1.0]), f64::INFINITY, 0b011),
+            (Ray::new([0.5, 0.5, -1.0], [0.0, 0.0, 1.0]), 3.0, 0b001),
+            // Exactly at the far box's entry distance: still in.
+            (Ray::new([0.5, 0.5, -1.0], [0.0, 0.0, 1.0]), 6.0, 0b011),
+            // In the face plane x = 0 (0 * inf = NaN is ignored), and with -0.0 components.
+            (Ray::new([0.0, 0.5, -1.0], [0.0, 0.0, 1.0]), f64::INFINITY, 0b011),
+            (Ray::new([0.0, 0.5, -1.0], [-0.0, -0.0, 1.0]), f64::INFINITY, 0b011),
+            // Along -x from the right: the box beside first, then the unit box.
+            (Ray::new([5.0, 0.5, 0.5], [-1.0, 0.0, 0.0]), f64::INFINITY, 0b101),
+            // Behind the origin.
+            (Ray::new([0.5, 0.5, 7.0], [0.0, 0.0, 1.0]), f64::INFINITY, 0b000),
+            // Diagonal from inside the unit box.
+            (Ray::new([0.5, 0.5, 0.5], [1.0, 0.01, 0.01]), f64::INFINITY, 0b101),
+        ] {
+            check::<f32>(ray, limit, expect);
+            check::<f64>(ray, limit, expect);
+        }
+    }
+
+    #[test]
+    fn non_finite_rays_are_not_prepared() {
+        assert!(Prepared::<f32>::new(&Ray::new([f64::NAN, 0.0, 0.0], [0.0, 0.0, 1.0])).is_none());
+        assert!(Prepared::<f64>::new(&Ray::new([0.0; 3], [f64::INFINITY, 0.0, 1.0])).is_none());
+        assert!(Prepared::<f64>::new(&Ray::new([0.0; 3], [0.0, 0.0, 1.0])).is_some());
+    }
+
+    #[test]
+    fn stack_pushes_and_pops_in_order() {
+        let mut s: Stack<u32> = Stack::new();
+        assert_eq!(s.pop(), None);
+        for i in 0..STACK as u32 {
+            s.push(i);
+        }
+        assert_eq!(s.pop(), Some(STACK as u32 - 1));
+        assert_eq!(s.pop(), Some(STACK as u32 - 2));
+    }
+
+    #[test]
+    fn sort_keys_follow_distances() {
+        assert!(0.5f32.key() < 0.75f32.key() && 0.0f32.key() < f32::MIN_POSITIVE.key());
+        assert!(1.0f64.key() < 1.5f64.key() && 0.0f64.key() | 7 < 1e-300f64.key());
+        assert!(f32::INFINITY.key() > f32::MAX.key());
+    }
+}
