@@ -16,6 +16,7 @@
 
 #![deny(missing_docs)]
 
+pub mod accuracy;
 pub mod throughput;
 
 use std::fs;
