@@ -35,15 +35,19 @@
 //!
 //! - **Disagreement**: for rays through a whole scene (closest hit through the back end's
 //!   BVH), the back end hits something where the reference hits nothing, or the reverse. For
-//!   aimed rays, any outcome other than the reference's single triangle: a crack, a double
-//!   hit, or one hit on the other triangle (wrong side).
+//!   aimed rays, any outcome other than a single triangle: a crack, a double hit, or, on a
+//!   ray that is not an exact tie, one hit on another triangle than the reference's (wrong
+//!   side). On an exact tie either single triangle is right: the reference's choice is a
+//!   convention (its tie rule), not geometry.
 //! - **Wrong triangle**: both hit, but the nearest triangle differs (judged on the rays for
 //!   which the reference computed its nearest hit).
 //! - **Distance error**: `|t - t*| / t*` for every reported hit, and the same in units of the
 //!   last place of `t*` in the back end's precision (ulps). Median, 99.9th percentile
 //!   (nearest rank) and maximum.
-//! - **NaN or infinite**: a reported hit whose `t`, `u` or `v` is NaN or infinite, or whose
-//!   `t` is not positive.
+//! - **NaN or infinite**: a reported hit whose `t`, `u` or `v` is NaN or infinite (the hard
+//!   limit is on NaN: the reference itself reports `t = inf` where the exact distance exceeds
+//!   `f64::MAX`). A hit with `t <= 0` or beyond `t_max`, or `occludes` disagreeing with
+//!   `intersect`, is a **contract violation**.
 //! - **Aimed rays** ([`rays::edge_rays`], [`rays::vertex_rays`]): each ray is aimed at a
 //!   point exactly on a shared edge (`p + k/16 (q - p)`, exact in `f64`) or at a shared vertex,
 //!   and is tested against the triangles there (the two at the edge, the ring at the vertex)
