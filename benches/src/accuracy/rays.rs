@@ -208,17 +208,18 @@ pub fn camera_rays(mesh: &TriMesh, width: u32, height: u32) -> Vec<Ray<f64>> {
 
 /// `count` rays with zero direction components (infinite inverse directions for the BVH's
 /// slab test): along an axis (two zeros) or in a coordinate plane (one zero), from random
-/// `f32` points of the box around the mesh grown by half its size. Every value is an `f32`.
+/// `f32` points of the box around the mesh grown by a quarter of its largest side on each
+/// side. Every value is an `f32`.
 #[must_use]
 pub fn axis_aligned_rays(mesh: &TriMesh, count: usize, seed: u64) -> Vec<Ray<f64>> {
     let (lo, hi) = mesh.bounds();
+    // Padded by a quarter of the largest side on every axis, so that a flat mesh (the tile
+    // grid) is not met only by rays in its plane.
+    let pad = 0.25 * mesh.extent();
     let mut rng = SplitMix64::new(seed);
     (0..count)
         .map(|_| {
-            let origin = round32_3(core::array::from_fn(|k| {
-                let pad = 0.25 * (hi[k] - lo[k]);
-                rng.range(lo[k] - pad, hi[k] + pad)
-            }));
+            let origin = round32_3(core::array::from_fn(|k| rng.range(lo[k] - pad, hi[k] + pad)));
             let axis = below(&mut rng, 3);
             let mut dir = [0.0; 3];
             dir[axis] = if rng.next_u64() & 1 == 0 { 1.0 } else { -1.0 };
