@@ -23,7 +23,9 @@
 //! the dual scalars `E*`: the ray passes through the closed triangle exactly when `w_a`, `w_b`,
 //! `w_c` are all `>= 0` or all `<= 0` (both faces), and `det = w_a + w_b + w_c = (N ∧ u)*` is
 //! the report's denominator `(u ∧ N)*`, so the barycentrics are `u = w_b / det`,
-//! `v = w_c / det`.
+//! `v = w_c / det`. A value that is exactly zero (the ray's line meets the edge's line) is
+//! decided by the tie rule below, so that a ray exactly through a shared edge or vertex hits
+//! exactly one triangle.
 //!
 //! **Evaluating the trivector in the plane of the ray's dual.** Since adding a multiple of `u`
 //! to a factor does not change `∧ u`, only the parts of `sa`, `sb` in the plane `D = û*`
@@ -72,6 +74,24 @@
 //!    orientation of the same projected points, a consistent planar picture of the mesh seen
 //!    along the ray, so the triangles around a vertex cover its neighbourhood. The tests find
 //!    no crack, through edges or vertices, near the origin or `1e3` grid sizes away from it.
+//! 3. **Ties: exactly one owner.** A ray exactly through an edge (an exact zero) would hit
+//!    both closed neighbours. Instead a zero gets the sign it would have if the ray were
+//!    moved by the infinitesimal `δ = ε ex + ε² ey` (`ε → 0+`; a symbolic perturbation, as in
+//!    Edelsbrunner and Mücke's simulation of simplicity, or rasterisation's top-left rule).
+//!    Moving the ray by `δ` moves every projected vertex by `-δ`:
+//!
+//!    ```text
+//!    w(δ) = (px - ε)(qy - ε²) - (py - ε²)(qx - ε) = w + ε (py - qy) + ε² (qx - px)
+//!    ```
+//!
+//!    (the `ε³` terms cancel), so a zero takes the sign of `py - qy`, or if that is 0 of
+//!    `qx - px` (a difference of two floats is 0 only when they are equal: exact sign); if
+//!    both are 0 the edge is parallel to the ray and the triangle, of zero projected area,
+//!    is missed. The neighbour evaluates the edge from `q` to `p` and gets the opposite tie
+//!    sign (if it is wound the other way, the same sign and the other orientation), so exactly
+//!    one of them owns the edge; around a vertex every sign is the exact sign at one
+//!    perturbed point, which lies in exactly one triangle of the fan. The rule runs only after
+//!    an exact zero, off the common path.
 //!
 //! This is the watertight test of Woop, Benthin and Wald (2013) written in the algebra: they
 //! project along the ray onto a coordinate plane by a shear (cheaper: no square root per ray,
@@ -109,11 +129,11 @@ use crate::{GaReal, is_degenerate};
 /// let left = Triangle::new([0.0f32, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
 /// let right = Triangle::new([1.0f32, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]);
 /// let k = GaPlucker::<f32>::new();
-/// // A ray aimed at a point of the shared edge hits at least one of them.
-/// let ray = Ray::new([0.3f32, 0.7, 1.0], [0.0, 0.0, -1.0]);
+/// // A ray aimed at a point of the shared edge hits exactly one of them.
+/// let ray = Ray::new([0.5f32, 0.5, 1.0], [0.0, 0.0, -1.0]);
 /// let rd = k.prepare_ray(&ray);
 /// let hits = [left, right].map(|tri| k.intersect(&k.prepare(&tri), &ray, &rd, f32::INFINITY));
-/// assert!(hits.iter().any(Option::is_some));
+/// assert_eq!(hits.iter().flatten().count(), 1);
 /// assert_eq!(hits.iter().flatten().next().unwrap().t, 1.0);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -220,13 +240,15 @@ fn intersect<T: Float>(
     // The edge trivectors, as their dual scalars; w_a is the edge opposite a, and so on.
     let mut w = [edge_value(pb, pc), edge_value(pc, pa), edge_value(pa, pb)];
 
-    // An exact zero may hide either sign (and NaN has none): decide those exactly.
+    // An exact zero may hide either sign (and NaN has none): decide those exactly, with
+    // the tie rule for exact zeros.
     let decided = |x: T| x.abs() > T::ZERO;
     if !(decided(w[0]) && decided(w[1]) && decided(w[2])) {
-        w = exact_signs([pa, pb, pc])?;
+        w = inside_exact([pa, pb, pc])?;
     }
 
-    // Inside (both faces, closed edges): no two values of opposite signs.
+    // Inside (both faces): no two values of opposite signs (exact zeros, if any, have been
+    // decided by the tie rule in `inside_exact`).
     let [w_a, w_b, w_c] = w;
     let any_negative = w_a < T::ZERO || w_b < T::ZERO || w_c < T::ZERO;
     let any_positive = w_a > T::ZERO || w_b > T::ZERO || w_c > T::ZERO;
@@ -248,7 +270,9 @@ fn intersect<T: Float>(
     }
     let t = num / den;
     let inv_det = T::ONE / det;
-    (t > T::ZERO && t <= t_max && t.is_finite()).then(|| TriangleHit {
+    // A non-finite `det` (edge values overflowed, or inf - inf) would give NaN or meaningless
+    // barycentrics: a miss. Checked only for a hit.
+    (t > T::ZERO && t <= t_max && t.is_finite() && det.is_finite()).then(|| TriangleHit {
         t,
         u: w_b * inv_det,
         v: w_c * inv_det,
@@ -270,21 +294,38 @@ fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
 }
 
 /// The three edge values with exact signs (Shewchuk's `orient2d` of the two points and the
-/// ray's trace at the origin of the plane); `None` (a miss) for non-finite input, where no
-/// sign is meaningful.
+/// ray's trace at the origin of the plane), an exact zero decided by the tie rule (see
+/// [the module documentation](self#why-it-is-watertight), point 3). `None` (a miss) when the
+/// ray is outside, or for non-finite input, where no sign is meaningful.
 #[cold]
 #[inline(never)]
-fn exact_signs<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
+fn inside_exact<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
     if !p.iter().flatten().all(|x| x.is_finite()) {
         return None;
     }
     let point = |q: [T; 2]| Coord { x: q[0].to_f64(), y: q[1].to_f64() };
     let origin = Coord { x: 0.0, y: 0.0 };
-    // orient2d(p, q, 0) = px qy - py qx, exactly signed.
-    Some(
-        [(1, 2), (2, 0), (0, 1)]
-            .map(|(i, j)| T::from_f64_keep_sign(orient2d(point(p[i]), point(p[j]), origin))),
-    )
+    // orient2d(p, q, 0) = px qy - py qx, exactly signed (NaN only if f64 overflowed).
+    let edges = [(1, 2), (2, 0), (0, 1)];
+    let w = edges.map(|(i, j)| orient2d(point(p[i]), point(p[j]), origin));
+    // NaN has no sign: 0, a miss.
+    let sign = |v: T| i8::from(v > T::ZERO) - i8::from(v < T::ZERO);
+    let signs: [i8; 3] = core::array::from_fn(|k| {
+        let ((i, j), value) = (edges[k], w[k]);
+        if value == 0.0 {
+            match sign(p[i][1] - p[j][1]) {
+                0 => sign(p[j][0] - p[i][0]),
+                s => s,
+            }
+        } else {
+            sign(T::from_f64_keep_sign(value))
+        }
+    });
+    if !(signs[0] != 0 && signs[0] == signs[1] && signs[1] == signs[2]) {
+        return None;
+    }
+    // The zeros stay zeros: the ray is on the edge, the barycentric weight is 0.
+    Some(w.map(T::from_f64_keep_sign))
 }
 
 /// `N* / |N|` for `N = (b - a) ∧ (c - a)`, computed in `f64` and rounded once; zero for a

@@ -4,10 +4,11 @@
 //! random diagonal, wound consistently, with the vertices stored once and shared by index (so
 //! neighbours see identical numbers, as in an indexed mesh). Rays start at random points
 //! above the grid and aim at random points of interior edges, or exactly at interior
-//! vertices; each such ray passes through the grid's interior, so it must hit some triangle.
-//! [`ga_tracer::GaPlucker`] must find no crack, in either precision, near the world origin and
-//! after moving everything `1e3` grid sizes away. The other kernels' crack counts are printed
-//! (run with `--nocapture`); they are not watertight.
+//! vertices; each such ray passes through the grid's interior, so it must hit some triangle,
+//! and only one at the aimed point. [`ga_tracer::GaPlucker`] must find no crack and no double
+//! hit (its tie rule gives a ray exactly on an edge or vertex to one triangle), in either
+//! precision, near the world origin and after moving everything `1e3` grid sizes away. The
+//! other kernels' crack counts are printed (run with `--nocapture`); they are not watertight.
 
 mod common;
 
@@ -41,7 +42,7 @@ impl Grid {
                 let p = [
                     offset + i as f64 + jitter(rng),
                     offset + j as f64 + jitter(rng),
-                    offset + rng.random_range(-0.4..0.4),
+                    offset + rng.random_range(-0.1..0.1),
                 ];
                 vertices.push(p.map(|x| T::from_f64(x).to_f64()));
             }
@@ -84,27 +85,44 @@ impl Grid {
         all.windows(2).filter(|w| w[0] == w[1]).map(|w| w[0]).collect()
     }
 
+    /// The largest `|grad z|` of a triangle: `|n_xy| / |n_z|` for its normal `n`.
+    fn max_slope(&self) -> f64 {
+        let slope = |t: &[usize; 3]| {
+            let [a, b, c] = t.map(|v| self.vertices[v]);
+            let (e, f) = (common::sub(b, a), common::sub(c, a));
+            let n =
+                [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]];
+            n[0].hypot(n[1]) / n[2].abs()
+        };
+        self.triangles.iter().map(slope).fold(0.0, f64::max)
+    }
+
     fn interior_vertices(&self) -> Vec<usize> {
         (1..N).flat_map(|i| (1..N).map(move |j| i * (N + 1) + j)).collect()
     }
 }
 
 /// `rays / 2` rays aimed at shared edges and as many at vertices; returns how many of each hit
-/// no triangle.
-fn cracks<I: Intersector + Default>(
+/// no triangle, and how many of each hit more than one.
+///
+/// Every triangle is tested (brute force), and a hit counts when its `t` is within `1e-2` of
+/// the aimed point's `t = 1`: the grid is not steep enough for a ray to meet it twice that
+/// close together, but it can meet it again farther on.
+fn cracks_and_doubles<I: Intersector + Default>(
     seed: u64,
     offset: f64,
     mixed_winding: bool,
     rays: usize,
-) -> [usize; 2] {
+) -> [[usize; 2]; 2] {
     let k = I::default();
     let mut rng = rng(seed);
     let grid = Grid::new::<I::Real>(&mut rng, offset, mixed_winding);
     let prims: Vec<I::Prim> =
         grid.triangles.iter().map(|&t| k.prepare(&grid.triangle(t))).collect();
+    assert!(grid.max_slope() < 2f64.sqrt(), "{}", grid.max_slope());
     let (edges, vertices) = (grid.interior_edges(), grid.interior_vertices());
     assert_eq!(edges.len(), 3 * N * N - 2 * N, "interior edges of an N x N split grid");
-    let mut missed = [0; 2];
+    let (mut missed, mut doubled) = ([0; 2], [0; 2]);
     for n in 0..rays {
         let target = if n % 2 == 0 {
             let (p, q) = edges[rng.random_range(0..edges.len())];
@@ -115,22 +133,40 @@ fn cracks<I: Intersector + Default>(
         } else {
             grid.vertices[vertices[rng.random_range(0..vertices.len())]]
         };
-        // From above, at most 45 degrees off vertical. The origin is rounded first, so the
+        // From above, at most 35 degrees off vertical (slope below 1 / sqrt(2)), steeper than
+        // every triangle (`max_slope` below): seen along the ray the grid does not fold, so
+        // the triangles around the aimed point cover it once. The origin is rounded first, so the
         // only error in the aim is the rounding of the direction: the ray passes within about
         // 1e-7 of the target in f32 even where coordinates are 1e4 and their spacing 1e-3.
         let origin = [
-            target[0] + rng.random_range(-3.0..3.0),
-            target[1] + rng.random_range(-3.0..3.0),
+            target[0] + rng.random_range(-1.5..1.5),
+            target[1] + rng.random_range(-1.5..1.5),
             target[2] + rng.random_range(3.0..6.0),
         ]
         .map(|x| I::Real::from_f64(x).to_f64());
         let ray: Ray<I::Real> = Ray::new(origin, common::sub(target, origin)).cast();
         let rd = k.prepare_ray(&ray);
-        if !prims.iter().any(|p| k.occludes(p, &ray, &rd, I::Real::INFINITY)) {
-            missed[n % 2] += 1;
+        let at_target = |p: &I::Prim| {
+            let hit = k.intersect(p, &ray, &rd, I::Real::INFINITY);
+            hit.is_some_and(|h| (h.t.to_f64() - 1.0).abs() <= 1e-2)
+        };
+        match prims.iter().filter(|&p| at_target(p)).count() {
+            0 => missed[n % 2] += 1,
+            1 => {}
+            _ => doubled[n % 2] += 1,
         }
     }
-    missed
+    [missed, doubled]
+}
+
+/// How many rays hit no triangle, through shared edges and through shared vertices.
+fn cracks<I: Intersector + Default>(
+    seed: u64,
+    offset: f64,
+    mixed_winding: bool,
+    rays: usize,
+) -> [usize; 2] {
+    cracks_and_doubles::<I>(seed, offset, mixed_winding, rays)[0]
 }
 
 const RAYS: usize = 20_000;
@@ -145,17 +181,19 @@ fn report<I: Intersector + Default>() {
     }
 }
 
-/// No cracks in either precision, near the origin and far from it, and also when neighbours
-/// are wound inconsistently (the edge value is then the same in both, not negated, and each
-/// accepts the other sign).
+/// No cracks and no double hits in either precision, near the origin and far from it, and
+/// also when neighbours are wound inconsistently (the edge value is then the same in both,
+/// not negated, and each accepts the other sign).
 #[test]
-fn plucker_has_no_cracks() {
+fn plucker_has_no_cracks_and_no_double_hits() {
     for offset in [0.0, 1e3 * N as f64] {
         for (seed, mixed) in [(0x6a_2001, false), (0x6a_2002, false), (0x6a_2003, true)] {
-            let f32_cracks = cracks::<ga_tracer::GaPlucker<f32>>(seed, offset, mixed, RAYS);
-            assert_eq!(f32_cracks, [0, 0], "f32, offset {offset}, mixed winding {mixed}");
-            let f64_cracks = cracks::<ga_tracer::GaPlucker<f64>>(seed, offset, mixed, RAYS);
-            assert_eq!(f64_cracks, [0, 0], "f64, offset {offset}, mixed winding {mixed}");
+            let f32_counts =
+                cracks_and_doubles::<ga_tracer::GaPlucker<f32>>(seed, offset, mixed, RAYS);
+            assert_eq!(f32_counts, [[0, 0]; 2], "f32, offset {offset}, mixed winding {mixed}");
+            let f64_counts =
+                cracks_and_doubles::<ga_tracer::GaPlucker<f64>>(seed, offset, mixed, RAYS);
+            assert_eq!(f64_counts, [[0, 0]; 2], "f64, offset {offset}, mixed winding {mixed}");
         }
     }
 }
@@ -167,4 +205,126 @@ fn the_other_kernels_leave_cracks() {
     for_each_kernel!(report);
     let [edges, vertices] = cracks::<ga_tracer::Ga<f32>>(0x6a_2001, 0.0, false, RAYS);
     assert!(edges > 0 && vertices > 0, "{edges} {vertices}");
+}
+
+/// How many of `tris` the ray from `origin` along `dir` hits, and which (indices).
+fn owners<I: Intersector + Default>(
+    tris: &[[[f64; 3]; 3]],
+    origin: [f64; 3],
+    dir: [f64; 3],
+) -> Vec<usize> {
+    let k = I::default();
+    let ray: Ray<I::Real> = Ray::new(origin, dir).cast();
+    let rd = k.prepare_ray(&ray);
+    let hit = |tri: &[[f64; 3]; 3]| {
+        let [a, b, c] = *tri;
+        k.intersect(&k.prepare(&Triangle::new(a, b, c).cast()), &ray, &rd, I::Real::INFINITY)
+    };
+    (0..tris.len()).filter(|&i| hit(&tris[i]).is_some()).collect()
+}
+
+/// Steep directions with small dyadic components (exact in `f32`), downwards and upwards,
+/// including the axis itself (where edges along the other axes need the rule's second term).
+fn steep_directions() -> Vec<[f64; 3]> {
+    let mut dirs = Vec::new();
+    for dx in [-0.25, -0.125, 0.0, 0.0625, 0.25] {
+        for dy in [-0.25, 0.0, 0.125, 0.1875] {
+            dirs.extend([[dx, dy, -1.0], [dx, dy, 1.0]]);
+        }
+    }
+    dirs
+}
+
+/// `p - 2 d`: exact for the dyadic points and directions used below.
+fn behind(p: [f64; 3], d: [f64; 3]) -> [f64; 3] {
+    core::array::from_fn(|n| p[n] - 2.0 * d[n])
+}
+
+/// The tie rule on two triangles sharing the edge from `(2, 0, 0)` to `(0, 2, 0)`: a ray
+/// exactly through a point of it hits exactly one, whichever is listed first and wherever
+/// each triangle's vertex list starts, and the same one in both cases.
+fn shared_edge_has_one_owner<I: Intersector + Default>() {
+    let lower = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
+    let upper = [[2.0, 0.0, 0.0], [2.0, 2.0, 0.0], [0.0, 2.0, 0.0]];
+    let rotated = |t: [[f64; 3]; 3]| [t[1], t[2], t[0]];
+    let flipped = |t: [[f64; 3]; 3]| [t[0], t[2], t[1]];
+    for point in [[1.0, 1.0, 0.0], [0.5, 1.5, 0.0], [1.75, 0.25, 0.0]] {
+        for dir in steep_directions() {
+            let origin = behind(point, dir);
+            let first = owners::<I>(&[lower, upper], origin, dir);
+            assert_eq!(first.len(), 1, "{}: {point:?} {dir:?}: {first:?}", label::<I>());
+            let swapped = owners::<I>(&[upper, lower], origin, dir);
+            assert_eq!(swapped, [1 - first[0]], "{}: {point:?} {dir:?}", label::<I>());
+            let turned = owners::<I>(&[rotated(lower), rotated(rotated(upper))], origin, dir);
+            assert_eq!(turned, first, "{}: {point:?} {dir:?}", label::<I>());
+            // Both wound the other way: still exactly one owner.
+            let other = owners::<I>(&[flipped(lower), flipped(upper)], origin, dir);
+            assert_eq!(other.len(), 1, "{}: {point:?} {dir:?}", label::<I>());
+        }
+    }
+}
+
+/// A ray exactly through the centre of a fan of triangles (a closed, non-planar ring with
+/// edges along the axes) hits exactly one of them, for every steep direction.
+fn fan_vertex_has_one_owner<I: Intersector + Default>() {
+    let ring = [
+        [1.0, 0.0, 0.25],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, -0.25],
+        [-1.0, 0.5, 0.5],
+        [-1.0, 0.0, 0.0],
+        [-0.5, -1.0, 0.125],
+        [0.0, -1.0, 0.0],
+        [0.75, -0.5, -0.25],
+    ];
+    let centre = [0.0, 0.0, 0.0];
+    let fan: Vec<[[f64; 3]; 3]> =
+        (0..ring.len()).map(|i| [centre, ring[i], ring[(i + 1) % ring.len()]]).collect();
+    for dir in steep_directions() {
+        let hits = owners::<I>(&fan, behind(centre, dir), dir);
+        assert_eq!(hits.len(), 1, "{}: {dir:?}: {hits:?}", label::<I>());
+    }
+}
+
+/// Coordinates at `±f32::MAX` overflow the kernel's intermediates: the result is a miss or a
+/// finite hit, never NaN.
+fn huge_coordinates_give_no_nan<I: Intersector + Default>() {
+    let m = f64::from(f32::MAX);
+    let tris = [
+        [[-m, -m, 0.0], [m, -m, 0.0], [0.0, m, 0.0]],
+        [[-m, -m, -m], [m, -m, m], [-m, m, m]],
+        [[m, m, m], [-m, m, -m], [m, -m, -m]],
+        [[0.0, 0.0, 0.0], [m, 0.0, 0.0], [0.0, m, 0.0]],
+    ];
+    let k = I::default();
+    for tri in tris {
+        let prim = k.prepare(&Triangle::new(tri[0], tri[1], tri[2]).cast());
+        for origin in [[0.0, 0.0, 1.0], [1e30, -1e30, m], [-m, m, m], [0.5, 0.25, -m]] {
+            for dir in steep_directions().into_iter().chain([[1.0, 1.0, 1.0], [m, -m, 1.0]]) {
+                let ray: Ray<I::Real> = Ray::new(origin, dir).cast();
+                if let Some(h) = k.intersect(&prim, &ray, &k.prepare_ray(&ray), I::Real::INFINITY) {
+                    let finite = [h.t, h.u, h.v].iter().all(|x| x.is_finite());
+                    assert!(finite, "{}: {tri:?} {origin:?} {dir:?}: {h:?}", label::<I>());
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn tie_rule_gives_a_shared_edge_to_exactly_one_triangle() {
+    shared_edge_has_one_owner::<ga_tracer::GaPlucker<f32>>();
+    shared_edge_has_one_owner::<ga_tracer::GaPlucker<f64>>();
+}
+
+#[test]
+fn tie_rule_gives_a_fan_vertex_to_exactly_one_triangle() {
+    fan_vertex_has_one_owner::<ga_tracer::GaPlucker<f32>>();
+    fan_vertex_has_one_owner::<ga_tracer::GaPlucker<f64>>();
+}
+
+#[test]
+fn huge_coordinates_never_give_nan() {
+    huge_coordinates_give_no_nan::<ga_tracer::GaPlucker<f32>>();
+    huge_coordinates_give_no_nan::<ga_tracer::GaPlucker<f64>>();
 }

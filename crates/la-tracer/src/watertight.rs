@@ -20,8 +20,9 @@
 //! 4. **Exact fallback**: if any of `U, V, W` is exactly 0 the origin may lie on an edge,
 //!    and rounding decides on which side; recompute all three with an exact sign (`f32`: in
 //!    `f64`, as in the paper; `f64`: Kahan's difference of products, see below).
-//! 5. **Inside test, both faces**: miss if some edge function is negative and some positive.
-//!    Zero counts as inside (closed triangle).
+//! 5. **Inside test, both faces**: hit only if all three edge functions have the same sign.
+//!    An exact zero (the ray passes exactly through the edge's line) is decided by the tie
+//!    rule below, so that exactly one of two neighbours owns a shared edge or vertex.
 //! 6. `det = U + V + W`; `det == 0` means the projected triangle has no area (ray parallel
 //!    to the plane, or a degenerate triangle): miss.
 //! 7. **Distance without division**: `T = U A'z + V B'z + W C'z` is `t * det`. With
@@ -40,9 +41,32 @@
 //! computed value has the exact sign (rounding is monotonic: `ab > cd` implies
 //! `fl(ab) >= fl(cd)`), and a zero is recomputed with an exact sign. So both triangles agree
 //! on which side of their common edge the ray passes, and the union of a fan of triangles
-//! leaves no point out: no cracks. A ray exactly on the edge (value 0) is inside both:
-//! counted twice, never zero times. This needs consistent vertex values (the same
+//! leaves no point out: no cracks. This needs consistent vertex values (the same
 //! floating-point numbers in both triangles), which indexed meshes give for free.
+//!
+//! # Ties: a ray exactly through an edge or a vertex
+//!
+//! A closed triangle would count a ray exactly on a shared edge twice. Instead an exact zero
+//! gets the sign it would have if the ray were moved by the infinitesimal
+//! `δ = (ε, ε²)` in the sheared plane (`ε → 0+`), a symbolic perturbation in the spirit of
+//! Edelsbrunner and Mücke's simulation of simplicity (and of rasterisation's top-left rule).
+//! Moving the ray by `δ` moves every vertex by `-δ`, and for the edge from `P` to `Q`,
+//! `E = Q'x P'y - Q'y P'x`,
+//!
+//! ```text
+//! E(δ) = (Q'x - δx)(P'y - δy) - (Q'y - δy)(P'x - δx)
+//!      = E + ε (Q'y - P'y) + ε² (P'x - Q'x)          (the δx δy terms cancel)
+//! ```
+//!
+//! so a zero `E` takes the sign of `Q'y - P'y`, or if that is 0 of `P'x - Q'x` (a difference
+//! of two floats is 0 only when they are equal, so its sign is exact); if both are 0 the edge
+//! projects to a point (it is parallel to the ray) and the triangle, of zero projected area,
+//! is missed. The neighbour evaluates the edge from `Q` to `P` and gets the opposite tie sign,
+//! so exactly one of them owns the edge; around a vertex every sign is the exact sign at one
+//! perturbed point, which lies in exactly one triangle of the fan. The rule runs only when an
+//! edge function is exactly 0, so it costs nothing on the common path. (In `f32`, an exact
+//! edge value below the smallest subnormal rounds to 0 and is decided by the rule too: still
+//! consistent across the edge, but only reachable with coordinates below about `1e-22`.)
 //!
 //! # Implementation notes
 //!
@@ -77,11 +101,14 @@ use crate::{GlamReal, is_degenerate};
 /// use la_tracer::Watertight;
 ///
 /// let wt = Watertight::<f64>::new();
-/// let prim = wt.prepare(&Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]));
-/// // Aimed exactly at the edge from b to c: edges are part of the triangle.
+/// let lower = Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]);
+/// let upper = Triangle::new([2.0, 0.0, 0.0], [2.0, 2.0, 0.0], [0.0, 2.0, 0.0]);
+/// // Aimed exactly at a point of their shared edge: exactly one of them owns it.
 /// let ray = Ray::new([1.0, 1.0, 3.0], [0.0, 0.0, -1.0]);
-/// let hit = wt.intersect(&prim, &ray, &wt.prepare_ray(&ray), f64::INFINITY).unwrap();
-/// assert_eq!((hit.t, hit.u, hit.v), (3.0, 0.5, 0.5));
+/// let rd = wt.prepare_ray(&ray);
+/// let hits = [lower, upper].map(|tri| wt.intersect(&wt.prepare(&tri), &ray, &rd, f64::INFINITY));
+/// assert_eq!(hits.iter().flatten().count(), 1);
+/// assert_eq!(hits.iter().flatten().next().unwrap().t, 3.0);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Watertight<T>(PhantomData<T>);
@@ -177,17 +204,24 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         // `next.x * this.y - next.y * this.x`.
         let mut wuv = T::rotate(x) * y - T::rotate(y) * x;
 
-        // Step 4: an exact zero may be a rounded nonzero; redo all three with an exact sign.
+        // Step 4: an exact zero may be a rounded nonzero; redo all three with an exact sign,
+        // and if a zero remains the ray is exactly on an edge's line: the tie rule decides.
+        // Step 5: both-sided inside test.
         if T::any_zero(wuv) {
             wuv = T::edge_functions_exact_sign(x, y);
-        }
-
-        // Step 5: both-sided inside test; zero is inside.
-        if T::any_negative(wuv) && T::any_positive(wuv) {
+            if T::any_zero(wuv) {
+                if !inside_with_ties::<T>(wuv, x, y) {
+                    return None;
+                }
+            } else if T::any_negative(wuv) && T::any_positive(wuv) {
+                return None;
+            }
+        } else if T::any_negative(wuv) && T::any_positive(wuv) {
             return None;
         }
 
-        // Step 6.
+        // Step 6. (An infinite `det`, from overflowed edge values, is a miss below: `t`
+        // becomes 0 or NaN.)
         let det = T::sum(wuv);
         if det == T::ZERO {
             return None;
@@ -214,4 +248,29 @@ impl<T: GlamReal> Intersector for Watertight<T> {
             v: weight_c * inv_det,
         })
     }
+}
+
+/// The inside test when some edge function is exactly 0, with the tie rule of the
+/// [module documentation](self#ties-a-ray-exactly-through-an-edge-or-a-vertex): a zero takes
+/// the sign of `Q'y - P'y`, else of `P'x - Q'x`, for the edge from `P` to `Q`. Hit only if
+/// all three signs are equal and non-zero. `wuv` is `(W, U, V)`: lane `i` is the edge from
+/// vertex `i` to vertex `i + 1`, and `x`, `y` hold the sheared vertices.
+#[cold]
+#[inline(never)]
+fn inside_with_ties<T: GlamReal>(wuv: T::V, x: T::V, y: T::V) -> bool {
+    let (e, x, y) = (T::lanes(wuv), T::lanes(x), T::lanes(y));
+    let signs: [i8; 3] = core::array::from_fn(|i| {
+        let j = (i + 1) % 3;
+        // NaN has no sign: 0, a miss (it never reaches the perturbation terms either).
+        let sign = |v: T| i8::from(v > T::ZERO) - i8::from(v < T::ZERO);
+        if e[i] == T::ZERO {
+            match sign(y[j] - y[i]) {
+                0 => sign(x[i] - x[j]),
+                s => s,
+            }
+        } else {
+            sign(e[i])
+        }
+    });
+    signs[0] != 0 && signs[0] == signs[1] && signs[1] == signs[2]
 }
