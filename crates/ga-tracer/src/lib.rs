@@ -41,8 +41,8 @@
 //! | | [`GaReport`] (`"ga-report"`) | [`Ga`] (`"ga"`) | [`GaPlucker`] (`"ga-plucker"`) |
 //! |---|---|---|---|
 //! | What it is | the report's steps as written, with [`ga::g3::geometry`]'s `Plane`, `Line` and the report's three edge tests | the same mathematics, per-triangle part precomputed | edge tests as the trivectors `((vi - o) ∧ (vj - o)) ∧ u` |
-//! | Shared edges and vertices | not watertight | not watertight | **watertight**: a ray through a shared edge or vertex hits at least one of the triangles, given identical vertex values in both |
-//! | Edges | closed | closed | closed |
+//! | Shared edges and vertices | not watertight | not watertight | **watertight**: a ray through a shared edge or vertex hits exactly one of the triangles (a tie rule decides exact zeros), given identical vertex values in both |
+//! | Edges | closed | closed | tie rule: an exact zero takes the sign it has for the ray moved by `ε ex + ε² ey` ([`plucker`](crate::plucker#why-it-is-watertight)) |
 //! | Faces | both | both | both |
 //! | Degenerate triangles | never hit (zero area decided exactly at `prepare`, see [`is_degenerate`]) | never hit (same) | never hit (same) |
 //! | NaN or infinite input | miss, no panic | miss, no panic | miss, no panic |
