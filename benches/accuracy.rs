@@ -12,13 +12,18 @@
 //! ```
 //!
 //! The smoke run uses tiny sizes and writes under the criterion directory
-//! (`<criterion dir>/accuracy-quick/`), never over `results/`. Timings are wall-clock, one
-//! thread; on a shared machine only their ratios are trustworthy.
+//! (`<criterion dir>/accuracy-quick/`), never over `results/`.
+//!
+//! **Clock.** Timings are the benchmark thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), one
+//! thread: the machine is shared, and a thread's CPU time stops while it is descheduled, so
+//! the ratios between back ends stay meaningful under load (measured here: wall-clock ratios
+//! of the same build moved by up to 2x between runs on a busy machine). `WEDGE_BENCH_WALL=1`
+//! measures wall time instead.
 
 use std::path::Path;
 use std::time::{Duration, SystemTime};
 
-use criterion::measurement::WallTime;
+use criterion::measurement::{Measurement, ValueFormatter, WallTime};
 use criterion::{BenchmarkGroup, Criterion, Throughput};
 use intersect::{Intersector, Ray, Triangle};
 use raytrace::Job;
@@ -39,9 +44,61 @@ const TIMED_RAYS: usize = 2048;
 /// Criterion's group name.
 const GROUP: &str = "accuracy_ns_per_ray";
 
+/// Criterion measurement: the calling thread's CPU time, or wall time with
+/// `WEDGE_BENCH_WALL=1`.
+struct ThreadClock {
+    wall: Option<std::time::Instant>,
+}
+
+impl ThreadClock {
+    fn from_env() -> Self {
+        let wall = std::env::var("WEDGE_BENCH_WALL").is_ok_and(|v| v == "1");
+        Self { wall: wall.then(std::time::Instant::now) }
+    }
+
+    fn now(&self) -> Duration {
+        if let Some(epoch) = self.wall {
+            return epoch.elapsed();
+        }
+        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+        // SAFETY: `ts` is a valid, writable timespec, and CLOCK_THREAD_CPUTIME_ID is a clock
+        // every Linux kernel provides for the calling thread.
+        let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &raw mut ts) };
+        assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
+        let secs = u64::try_from(ts.tv_sec).expect("a thread's CPU time is not negative");
+        let nanos = u32::try_from(ts.tv_nsec).expect("nanoseconds below one second");
+        Duration::new(secs, nanos)
+    }
+}
+
+impl Measurement for ThreadClock {
+    type Intermediate = Duration;
+    type Value = Duration;
+
+    fn start(&self) -> Duration {
+        self.now()
+    }
+    fn end(&self, start: Duration) -> Duration {
+        self.now().saturating_sub(start)
+    }
+    fn add(&self, a: &Duration, b: &Duration) -> Duration {
+        *a + *b
+    }
+    fn zero(&self) -> Duration {
+        Duration::ZERO
+    }
+    fn to_f64(&self, value: &Duration) -> f64 {
+        value.as_nanos() as f64
+    }
+    fn formatter(&self) -> &dyn ValueFormatter {
+        // Values are durations in nanoseconds, as criterion's wall clock reports them.
+        WallTime.formatter()
+    }
+}
+
 /// Registers the closest-hit timing of one back end.
 struct TimeJob<'a, 'g> {
-    group: &'a mut BenchmarkGroup<'g, WallTime>,
+    group: &'a mut BenchmarkGroup<'g, ThreadClock>,
     triangles: &'a [Triangle<f64>],
     rays: &'a [Ray<f64>],
     id: String,
@@ -87,6 +144,7 @@ fn main() {
     let (warm_up, measurement) =
         if quick { bench_times() } else { (Duration::from_secs(1), Duration::from_secs(3)) };
     let mut criterion = Criterion::default()
+        .with_measurement(ThreadClock::from_env())
         .warm_up_time(warm_up)
         .measurement_time(measurement)
         .sample_size(10)

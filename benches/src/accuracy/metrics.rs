@@ -61,6 +61,38 @@ pub fn t_error(tri: &Triangle<f64>, ray: &Ray<f64>, t: f64, digits: u32) -> Opti
     Some(TError { relative, ulps: relative * exact.abs() / ulp(exact, digits), exact })
 }
 
+/// The exact sign (-1, 0 or 1) of `n . d`, with `n = (b - a) x (c - a)` the triangle's
+/// normal: negative when the ray meets the triangle's front. `None` for non-finite input.
+///
+/// Computed as the determinant `det[b - a, c - a, d]` on big integers (every input an integer
+/// multiple of the smallest power of two among them), so it is exact however the triangle
+/// and the direction are conditioned.
+#[must_use]
+pub fn facing_sign(tri: &Triangle<f64>, dir: [f64; 3]) -> Option<i32> {
+    let values: Vec<f64> = [tri.a, tri.b, tri.c, dir].iter().flatten().copied().collect();
+    if values.iter().any(|x| !x.is_finite()) {
+        return None;
+    }
+    let parts: Vec<(i64, i32)> = values.iter().map(|&x| split(x)).collect();
+    let base = parts.iter().filter(|(m, _)| *m != 0).map(|(_, e)| *e).min().unwrap_or(0);
+    let big = |k: usize| -> BigInt {
+        let (m, e) = parts[k];
+        BigInt::from(m) << (e - base) as usize
+    };
+    let point = |k: usize| -> [BigInt; 3] { [big(k), big(k + 1), big(k + 2)] };
+    let (a, b, c, d) = (point(0), point(3), point(6), point(9));
+    let ab: [BigInt; 3] = core::array::from_fn(|k| &b[k] - &a[k]);
+    let ac: [BigInt; 3] = core::array::from_fn(|k| &c[k] - &a[k]);
+    let v = det(&ab, &ac, &d);
+    Some(if v.is_zero() {
+        0
+    } else if v.is_positive() {
+        1
+    } else {
+        -1
+    })
+}
+
 /// `x = m 2^e` with an integer `m` of at most 53 bits (`(0, 0)` for zero).
 fn split(x: f64) -> (i64, i32) {
     if x == 0.0 {
@@ -153,6 +185,15 @@ mod tests {
         let down = Ray::new([0.0; 3], [0.0, 0.0, 2f64.powi(-700)]);
         let e = t_error(&tiny, &down, 2f64.powi(-300), 53).unwrap();
         assert_eq!((e.relative, e.exact), (0.0, 2f64.powi(-300)));
+    }
+
+    #[test]
+    fn facing_signs_are_exact() {
+        let tri = Triangle::new([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        assert_eq!(facing_sign(&tri, [0.0, 0.0, -1.0]), Some(-1));
+        assert_eq!(facing_sign(&tri, [0.3, 0.2, 1e-300]), Some(1));
+        assert_eq!(facing_sign(&tri, [0.3, 0.2, 0.0]), Some(0));
+        assert_eq!(facing_sign(&tri, [f64::NAN, 0.0, 1.0]), None);
     }
 
     #[test]

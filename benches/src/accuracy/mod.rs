@@ -52,10 +52,14 @@
 //!   point exactly on a shared edge (`p + k/16 (q - p)`, exact in `f64`) or at a shared vertex,
 //!   and is tested against the triangles there (the two at the edge, the ring at the vertex)
 //!   with any-hit semantics (each triangle's kernel asked separately). Only rays that really
-//!   cross the surface there are kept: those the reference, in the back end's precision,
-//!   finds to hit exactly one of those triangles (a fold seen edge-on, or a triangle
-//!   collapsed by rounding in a far-moved mesh, is left out). The mesh's coordinates are
-//!   rounded to `f32` first, so both precisions see the same triangles.
+//!   cross the surface there are kept: all those triangles face the ray the same way (the
+//!   exact sign of `n . d`; no fold seen along the ray, no triangle collapsed by rounding in
+//!   a far-moved mesh), so that any consistent tie rule crosses exactly one of them; and, as
+//!   a check, the reference in the back end's precision hits exactly one. (At a fold seen
+//!   along the ray the number of triangles crossed, one or three, depends on the direction of
+//!   the perturbation a tie rule applies; such rays would make "double hit" depend on the
+//!   rule rather than on the kernel.) The mesh's coordinates are rounded to `f32` first, so
+//!   both precisions see the same triangles.
 //!   - `exact` aim: origin and direction are `f32` values and `origin + dir` is exactly the
 //!     target, so the `f32` and `f64` back ends both see a ray exactly through the edge or
 //!     vertex: an **exact tie**.

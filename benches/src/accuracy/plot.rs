@@ -130,7 +130,7 @@ pub fn draw_runtime_vs_error(
             .y_labels(8)
             .x_label_formatter(&|x| format!("{x:.0}"))
             .y_label_formatter(&|y| format!("{y:.0e}"))
-            .x_desc("ns per ray (closest hit, BVH, one thread)")
+            .x_desc("ns per ray (closest hit, BVH, one thread, CPU time)")
             .y_desc("error (floor line: 0)")
             .label_style(("sans-serif", 11))
             .draw()?;

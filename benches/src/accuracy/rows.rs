@@ -20,7 +20,8 @@ pub struct AccuracyRow {
     pub ray_set: String,
     /// Rays judged.
     pub rays: u64,
-    /// Mean nanoseconds per closest-hit ray through the BVH, one thread (timed sets only).
+    /// Mean nanoseconds per closest-hit ray through the BVH, one thread, thread CPU time
+    /// (timed sets only).
     pub ns_per_ray: Option<f64>,
     /// Rays the reference says hit.
     pub exact_hits: u64,

@@ -15,7 +15,7 @@ use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
 use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
 
-use super::metrics::{TError, t_error};
+use super::metrics::{TError, facing_sign, t_error};
 use super::rays::AimedSet;
 
 /// One row subject: a back end in one precision, or the exact reference (`f64` only).
@@ -128,9 +128,10 @@ pub struct AimedVerdict {
     pub tie: bool,
 }
 
-/// The reference's verdict for each aimed ray in `precision`: `None` for a ray that does not
-/// hit exactly one of its triangles (it does not cross the surface there, for instance at a
-/// fold seen edge-on, or a triangle collapsed by rounding), which is then left out.
+/// The reference's verdict for each aimed ray in `precision`, or `None` for a ray left out
+/// because it does not really cross the surface there: the triangles at its target do not
+/// all face it the same way (a fold seen along the ray, or a triangle collapsed to zero area
+/// by rounding), or, as a check, the reference does not find exactly one of them hit.
 #[must_use]
 pub fn judge_aimed(set: &AimedSet, precision: Precision) -> Vec<Option<AimedVerdict>> {
     set.rays
@@ -142,6 +143,13 @@ pub fn judge_aimed(set: &AimedSet, precision: Precision) -> Vec<Option<AimedVerd
                 .iter()
                 .map(|&t| seen_triangle(&set.mesh.triangle(t), precision))
                 .collect();
+            // No fold seen along the ray: every triangle there faces it the same way, so the
+            // ray crosses the surface exactly once whatever the tie rule (a fold seen edge-on
+            // is crossed once or three times depending on which side a perturbation takes).
+            let facing: Vec<Option<i32>> = tris.iter().map(|t| facing_sign(t, ray.dir)).collect();
+            if facing[0].is_none_or(|f| f == 0) || facing.iter().any(|f| *f != facing[0]) {
+                return None;
+            }
             let mut hit = tris
                 .iter()
                 .enumerate()

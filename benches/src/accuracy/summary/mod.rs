@@ -221,7 +221,8 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
     let _ = writeln!(
         s,
         "**Cost.** Nanoseconds per ray from this bench (closest hit through the BVH, random \
-         rays through the bunny, one thread) and the ratio to `la` in the same precision:\n"
+         rays through the bunny, one thread, thread CPU time) and the ratio to `la` in the \
+         same precision:\n"
     );
     let _ = writeln!(s, "| back end | f32 ns/ray | ratio to la | f64 ns/ray | ratio to la |");
     let _ = writeln!(s, "|---|---|---|---|---|");
