@@ -101,13 +101,11 @@ fn watertight_backends_have_no_cracks_at_shared_edges_and_vertices() {
     assert!(bad.is_empty(), "rays slipped through:\n{}", bad.join("\n"));
 }
 
-/// The issue asks for no double hits from the watertight back ends at all. Both close their
-/// edges (an edge function of exactly 0 counts as inside), so a ray exactly through a shared
-/// edge can be reported by both triangles: measured, `la` does so on most such rays, and
-/// `ga-plucker` on a few. Ignored until the kernels get a tie-breaking rule; run with
-/// `--ignored` to see the counts.
+/// No double hits either: both back ends break exact ties (a zero edge function) by a
+/// symbolic perturbation, so a ray exactly through a shared edge or vertex is reported by one
+/// triangle only. The rays kept are those where every triangle at the target faces the ray
+/// the same way, so exactly one crossing is right under any consistent tie rule.
 #[test]
-#[ignore = "la and ga-plucker report both triangles of some rays exactly through a shared edge or vertex (closed edges, no tie rule yet)"]
 fn watertight_backends_have_no_double_hits_at_shared_edges_and_vertices() {
     let rows = aimed_rows(&watertight());
     let bad: Vec<String> = rows
@@ -180,25 +178,9 @@ fn ordinary_rays_agree_with_the_reference_and_distances_are_accurate() {
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }
 
-/// Known violations of the degenerate-input limits, reported to the kernels' owners:
-/// `(triangle kind, back end, precision, what goes wrong)`. They are tolerated (and printed,
-/// with a note once they no longer occur, so that the entry can be removed); every other row
-/// must pass.
-const KNOWN_DEGENERATE_VIOLATIONS: &[(&str, &str, &str, &str)] = &[(
-    "f32-max",
-    "ga-plucker",
-    "f32",
-    "hit with NaN u and v: the edge values overflow to infinity for coordinates near f32::MAX",
-)];
-
 #[test]
 fn degenerate_input_never_panics_is_never_hit_and_gives_no_nan() {
     let rows = degenerate_rows(&Sizes::test(), &Subject::all());
-    let known = |r: &StabilityRow| {
-        KNOWN_DEGENERATE_VIOLATIONS
-            .iter()
-            .any(|(k, b, p, _)| r.variant == *k && r.backend == *b && r.precision == *p)
-    };
     let describe = |r: &StabilityRow| {
         format!(
             "{} {} {}: panics {:?}, degenerate hits {:?}, NaN {} (NaN or inf {}), contract violations {:?}",
@@ -212,15 +194,8 @@ fn degenerate_input_never_panics_is_never_hit_and_gives_no_nan() {
             r.contract_violations
         )
     };
-    for r in rows.iter().filter(|r| known(r)) {
-        if r.meets_limits == Some(true) {
-            println!("known violation no longer occurs (remove it from the list): {}", describe(r));
-        } else {
-            println!("known violation: {}", describe(r));
-        }
-    }
     let bad: Vec<String> =
-        rows.iter().filter(|r| r.meets_limits != Some(true) && !known(r)).map(describe).collect();
+        rows.iter().filter(|r| r.meets_limits != Some(true)).map(describe).collect();
     assert!(rows.iter().any(|r| r.variant == "collinear" && r.rays > 100));
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }

@@ -67,11 +67,14 @@
 //!     its rounding, which generally passes near the edge, not through it. The reference then
 //!     says which single triangle that rounded ray crosses.
 //! - **Crack**: an aimed ray that hits none of the triangles at its edge or vertex.
-//! - **Double hit**: an aimed ray that more than one of them reports hit. The reference's
-//!   tie rule makes exactly one count; a back end whose edges are closed (an edge function
-//!   of exactly 0 counts as inside, as in `la` and `ga-plucker`) reports both triangles of an
-//!   exact tie, and that is counted as a double hit, as the issue defines it. The column
-//!   `double_hits_off_tie` counts the double hits on rays that are not exact ties.
+//! - **Double hit**: an aimed ray that more than one of them reports hit (any-hit
+//!   semantics, as the issue defines it). The reference's tie rule makes exactly one count.
+//!   A kernel whose edges are simply closed (an edge function of exactly 0 counts as inside:
+//!   `la-mt`, `ga`, `ga-report`) reports both triangles of an exact tie; `la` and
+//!   `ga-plucker` break exact zeros with a tie rule of their own (a symbolic perturbation of
+//!   the ray), so they report one. Which one may differ from the reference's choice, and
+//!   that is not an error. The column `double_hits_off_tie` counts the double hits on rays
+//!   that are not exact ties.
 //! - **Hit fraction** (sweeps): the fraction of the random rays that hit the moved or scaled
 //!   mesh; `hit_fraction_change` is its difference from the unmoved, unscaled mesh's.
 //!

@@ -164,8 +164,11 @@ pub fn render(
          at a point of a shared edge or at a shared vertex that hits none of the triangles \
          there; a **double hit** is one that more than one of them reports hit (any-hit \
          semantics). The reference's tie rule makes exactly one triangle count for a ray \
-         exactly through an edge (an **exact tie**); a kernel with closed edges reports both, \
-         which is counted as a double hit. **Distance errors** are against the exact rational \
+         exactly through an edge (an **exact tie**); a kernel with simply closed edges reports \
+         both, which is counted as a double hit, while `la` and `ga-plucker` break ties with a \
+         rule of their own and report one (on a tie, either single triangle is right). Aimed \
+         rays are kept only where every triangle at the target faces the ray the same way (no \
+         fold seen along the ray). **Distance errors** are against the exact rational \
          `t`, relative and in ulps of the back end's precision. Full definitions: the docs of \
          `wedge_benches::accuracy`.\n"
     );
