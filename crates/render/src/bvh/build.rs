@@ -170,18 +170,13 @@ struct Binning {
 
 impl Binning {
     fn new(info: &Info, count: usize) -> Self {
-        let (lo, hi) = (info.clo.to_array(), info.chi.to_array());
         // Slightly under count / extent, so that the largest centroid lands in the last bin
-        // (the clamp in `bins` catches what rounding still pushes over); 0 for a flat axis
-        // (everything in bin 0).
-        let scale: [f32; 4] = core::array::from_fn(|k| {
-            let extent = hi[k] - lo[k];
-            if k < 3 && extent > 0.0 && extent.is_finite() {
-                count as f32 * (1.0 - 1e-6) / extent
-            } else {
-                0.0
-            }
-        });
+        // (the clamp in `bins` catches what rounding still pushes over); 0 for a flat or
+        // non-finite axis (everything in bin 0).
+        let extent = info.chi.sub(info.clo);
+        let scale = F4::splat(count as f32 * (1.0 - 1e-6)).div(extent).to_array();
+        let ok = extent.to_array().map(|e| e > 0.0 && e.is_finite());
+        let scale = core::array::from_fn(|k| if k < 3 && ok[k] { scale[k] } else { 0.0 });
         Self { min: info.clo, scale: F4::new(scale), count }
     }
 
@@ -210,14 +205,23 @@ struct Set {
     start: usize,
     end: usize,
     info: Info,
+    /// Half the surface area of the box.
+    area: f64,
     plan: Plan,
     depth: usize,
 }
 
 impl Set {
-    fn new(refs: &[PrimRef], start: usize, end: usize, info: Info, depth: usize) -> Self {
-        let plan = plan(&refs[start..end], &info, depth);
-        Self { start, end, info, plan, depth }
+    fn new(
+        scratch: &mut Scratch,
+        refs: &[PrimRef],
+        (start, end): (usize, usize),
+        info: Info,
+        depth: usize,
+    ) -> Self {
+        let area = info.half_area();
+        let plan = plan(scratch, &refs[start..end], &info, area, depth);
+        Self { start, end, info, area, plan, depth }
     }
 
     fn len(&self) -> usize {
@@ -225,17 +229,37 @@ impl Set {
     }
 }
 
-/// One SAH bin: the union of its primitives' boxes and their number.
+/// The SAH bins of one axis: the union of the boxes of each bin's primitives, and their
+/// number. Fixed-size arrays, indexed with `& (BINS - 1)`, so the compiler sees every index in
+/// bounds (`Binning::bins` already clamps them below `count <= BINS`).
 #[derive(Clone, Copy)]
-struct Bin {
-    lo: F4,
-    hi: F4,
-    count: u32,
+struct AxisBins {
+    lo: [F4; BINS],
+    hi: [F4; BINS],
+    count: [u32; BINS],
+}
+
+const _: () = assert!(BINS.is_power_of_two());
+
+/// Bins and sweep buffers reused from set to set (one per thread of the build): a set clears
+/// only the bins it uses, so small sets cost little.
+pub struct Scratch {
+    axes: [AxisBins; 3],
+    /// `right_cost[i]`: primitives right of boundary `i` times the half area of their box.
+    right_cost: [f32; BINS],
+}
+
+impl Scratch {
+    pub fn new() -> Self {
+        let empty =
+            AxisBins { lo: [F4::INFINITY; BINS], hi: [F4::NEG_INFINITY; BINS], count: [0; BINS] };
+        Self { axes: [empty; 3], right_cost: [0.0; BINS] }
+    }
 }
 
 /// Decides whether `refs` (described by `info`, `depth` splits below the root) becomes a leaf
 /// or is split, and how.
-fn plan(refs: &[PrimRef], info: &Info, depth: usize) -> Plan {
+fn plan(scratch: &mut Scratch, refs: &[PrimRef], info: &Info, area: f64, depth: usize) -> Plan {
     let n = refs.len();
     if n == 1 {
         return Plan::Leaf;
@@ -251,8 +275,13 @@ fn plan(refs: &[PrimRef], info: &Info, depth: usize) -> Plan {
     if !sah_allowed || flat {
         return median();
     }
-    let area = info.half_area();
-    match best_split(refs, info) {
+    if n == 2 {
+        // The only split puts each primitive alone: no need to bin.
+        let cost = refs[0].lo().half_area(refs[0].hi()) + refs[1].lo().half_area(refs[1].hi());
+        let split = area > 0.0 && TRAVERSAL_COST + f64::from(cost) / area < 2.0;
+        return if split { Plan::Median { axis: widest } } else { Plan::Leaf };
+    }
+    match best_split(scratch, refs, info) {
         Some((plan, cost)) => {
             let split_cost = if area > 0.0 { TRAVERSAL_COST + cost / area } else { TRAVERSAL_COST };
             if n > MAX_LEAF || split_cost < n as f64 { plan } else { Plan::Leaf }
@@ -265,57 +294,83 @@ fn plan(refs: &[PrimRef], info: &Info, depth: usize) -> Plan {
 
 /// The cheapest binned SAH split over all axes and its cost `n_l A_l + n_r A_r` (half areas);
 /// `None` if no axis has two non-empty sides. Small sets use fewer bins.
-fn best_split(refs: &[PrimRef], info: &Info) -> Option<(Plan, f64)> {
-    let count = BINS.min(refs.len());
+fn best_split(scratch: &mut Scratch, refs: &[PrimRef], info: &Info) -> Option<(Plan, f64)> {
+    let n = refs.len() as u32;
+    let count = bin_count(refs.len());
     let binning = Binning::new(info, count);
-    let empty = Bin { lo: F4::splat(f32::INFINITY), hi: F4::splat(f32::NEG_INFINITY), count: 0 };
-    let mut bins = [[empty; BINS]; 3];
-    for r in refs {
-        let b = binning.bins(r);
-        let (lo, hi) = (r.lo(), r.hi());
-        for (axis, bins) in bins.iter_mut().enumerate() {
-            let bin = &mut bins[b[axis] as usize];
-            bin.lo = bin.lo.min(lo);
-            bin.hi = bin.hi.max(hi);
-            bin.count += 1;
+    let [x, y, z] = &mut scratch.axes;
+    for i in 0..count {
+        for axis in [&mut *x, &mut *y, &mut *z] {
+            axis.lo[i] = F4::INFINITY;
+            axis.hi[i] = F4::NEG_INFINITY;
+            axis.count[i] = 0;
         }
     }
-    let box_of = |lo: F4, hi: F4| {
-        let (lo, hi) = (lo.to_array(), hi.to_array());
-        half_area([lo[0], lo[1], lo[2]], [hi[0], hi[1], hi[2]])
-    };
-    let mut best: Option<(Plan, f64)> = None;
-    let mut right_cost = [0.0f64; BINS];
+    for r in refs {
+        let b = binning.bins(r).map(|b| b as usize & (BINS - 1));
+        let (lo, hi) = (r.lo(), r.hi());
+        x.lo[b[0]] = x.lo[b[0]].min(lo);
+        x.hi[b[0]] = x.hi[b[0]].max(hi);
+        x.count[b[0]] += 1;
+        y.lo[b[1]] = y.lo[b[1]].min(lo);
+        y.hi[b[1]] = y.hi[b[1]].max(hi);
+        y.count[b[1]] += 1;
+        z.lo[b[2]] = z.lo[b[2]].min(lo);
+        z.hi[b[2]] = z.hi[b[2]].max(hi);
+        z.count[b[2]] += 1;
+    }
+    // (axis, last bin on the left, cost n_l A_l + n_r A_r)
+    let mut best = (0, 0, f32::INFINITY);
     let scale = binning.scale.to_array();
-    for (axis, bins) in bins.iter().enumerate() {
+    let right_cost = &mut scratch.right_cost;
+    for (axis, bins) in scratch.axes.iter().enumerate() {
         if scale[axis] == 0.0 {
             continue;
         }
-        let bins = &bins[..count];
-        // Right-to-left sweep: cost of everything right of each boundary (-1: nothing).
-        let (mut lo, mut hi) = (F4::splat(f32::INFINITY), F4::splat(f32::NEG_INFINITY));
-        let mut on_right = 0u32;
+        // Right to left, then left to right; only boxes of non-empty sides are measured, so
+        // `half_area` never sees an empty box.
+        let (mut lo, mut hi) = (F4::INFINITY, F4::NEG_INFINITY);
+        let mut on_right = 0;
         for i in (1..count).rev() {
-            (lo, hi) = (lo.min(bins[i].lo), hi.max(bins[i].hi));
-            on_right += bins[i].count;
-            right_cost[i - 1] =
-                if on_right > 0 { f64::from(on_right) * box_of(lo, hi) } else { -1.0 };
+            lo = lo.min(bins.lo[i]);
+            hi = hi.max(bins.hi[i]);
+            on_right += bins.count[i];
+            right_cost[i - 1] = on_right as f32 * lo.half_area(hi);
         }
-        let (mut lo, mut hi) = (F4::splat(f32::INFINITY), F4::splat(f32::NEG_INFINITY));
-        let mut on_left = 0u32;
-        for (i, bin) in bins[..count - 1].iter().enumerate() {
-            (lo, hi) = (lo.min(bin.lo), hi.max(bin.hi));
-            on_left += bin.count;
-            if on_left == 0 || right_cost[i] < 0.0 {
+        let (mut lo, mut hi) = (F4::INFINITY, F4::NEG_INFINITY);
+        let mut on_left = 0;
+        #[allow(clippy::needless_range_loop, reason = "three arrays and `right_cost` by bin")]
+        for i in 0..count - 1 {
+            lo = lo.min(bins.lo[i]);
+            hi = hi.max(bins.hi[i]);
+            on_left += bins.count[i];
+            if on_left == 0 {
                 continue;
             }
-            let cost = f64::from(on_left) * box_of(lo, hi) + right_cost[i];
-            if best.is_none_or(|(_, c)| cost < c) {
-                best = Some((Plan::Sah { axis, bin: i as u32, binning }, cost));
+            if on_left == n {
+                break;
+            }
+            let cost = on_left as f32 * lo.half_area(hi) + right_cost[i];
+            if cost < best.2 {
+                best = (axis, i, cost);
             }
         }
     }
-    best
+    let (axis, bin, cost) = best;
+    (cost < f32::INFINITY).then(|| (Plan::Sah { axis, bin: bin as u32, binning }, f64::from(cost)))
+}
+
+/// Bins per axis for a set of `n` primitives: many where the split decides much (near the
+/// root) and the binning is a small part of the work, few for the many small sets.
+fn bin_count(n: usize) -> usize {
+    let bins = if n >= 4096 {
+        BINS
+    } else if n >= 256 {
+        16
+    } else {
+        8
+    };
+    bins.min(n)
 }
 
 /// Splits `refs` as `plan` says; returns the size of the left side and both descriptions.
@@ -334,29 +389,38 @@ fn split(refs: &mut [PrimRef], plan: Plan) -> (usize, Info, Info) {
 }
 
 /// Moves the primitives satisfying `left` to the front; returns how many there are and the
-/// descriptions of both sides, gathered on the way (each primitive is looked at once).
+/// descriptions of both sides, gathered on the way (each primitive is tested and described
+/// once, and only misplaced ones move: one swap per pair, as in Hoare's partition).
 fn partition(refs: &mut [PrimRef], mut left: impl FnMut(&PrimRef) -> bool) -> (usize, Info, Info) {
     let (mut l, mut r) = (Info::empty(), Info::empty());
-    let mut i = 0;
-    let mut j = refs.len();
-    while i < j {
-        if left(&refs[i]) {
+    let (mut i, mut j) = (0, refs.len());
+    loop {
+        while i < j && left(&refs[i]) {
             l.add(&refs[i]);
             i += 1;
-        } else {
-            r.add(&refs[i]);
-            j -= 1;
-            refs.swap(i, j);
         }
+        while i < j && !left(&refs[j - 1]) {
+            j -= 1;
+            r.add(&refs[j]);
+        }
+        if i == j {
+            return (i, l, r);
+        }
+        // refs[i] belongs right and refs[j - 1] left.
+        j -= 1;
+        refs.swap(i, j);
+        l.add(&refs[i]);
+        r.add(&refs[j]);
+        i += 1;
     }
-    (i, l, r)
 }
 
 /// Builds the tree over `refs` (described by `info`) into `out`, whose first node is the
 /// root. The root is always a node, even for a single leaf.
 pub fn build<T: Real>(refs: &mut [PrimRef], info: Info) -> Vec<Node> {
     let mut out = Vec::with_capacity(refs.len() / 4 + 1);
-    let root = Set::new(refs, 0, refs.len(), info, 0);
+    let mut scratch = Scratch::new();
+    let root = Set::new(&mut scratch, refs, (0, refs.len()), info, 0);
     if matches!(root.plan, Plan::Leaf) {
         let mut node = Node::EMPTY;
         let (lo, hi) = root.info.bounds();
@@ -364,33 +428,36 @@ pub fn build<T: Real>(refs: &mut [PrimRef], info: Info) -> Vec<Node> {
         node.set(0, lo, hi, leaf_ref(0, refs.len()));
         out.push(node);
     } else {
-        node_into::<T>(&mut out, refs, 0, root);
+        node_into::<T>(&mut scratch, &mut out, refs, 0, root);
     }
     out
 }
 
 /// Builds the wide node for `set` (planned to be split; `refs` is the slice its range refers
 /// to, starting at slot `base`) and its subtrees into `out`; returns the node's index in `out`.
-fn node_into<T: Real>(out: &mut Vec<Node>, refs: &mut [PrimRef], base: usize, set: Set) -> u32 {
+fn node_into<T: Real>(
+    scratch: &mut Scratch,
+    out: &mut Vec<Node>,
+    refs: &mut [PrimRef],
+    base: usize,
+    set: Set,
+) -> u32 {
     // Open the largest splittable child until the node is full.
     let mut kids = [set; WIDTH];
     let mut len = 1;
     while len < WIDTH {
         let mut pick: Option<(usize, f64)> = None;
         for (i, kid) in kids[..len].iter().enumerate() {
-            if !matches!(kid.plan, Plan::Leaf) {
-                let area = kid.info.half_area();
-                if pick.is_none_or(|(_, a)| area > a) {
-                    pick = Some((i, area));
-                }
+            if !matches!(kid.plan, Plan::Leaf) && pick.is_none_or(|(_, a)| kid.area > a) {
+                pick = Some((i, kid.area));
             }
         }
         let Some((i, _)) = pick else { break };
         let kid = kids[i];
         let (mid, left, right) = split(&mut refs[kid.start..kid.end], kid.plan);
         let mid = kid.start + mid;
-        kids[i] = Set::new(refs, kid.start, mid, left, kid.depth + 1);
-        kids[len] = Set::new(refs, mid, kid.end, right, kid.depth + 1);
+        kids[i] = Set::new(scratch, refs, (kid.start, mid), left, kid.depth + 1);
+        kids[len] = Set::new(scratch, refs, (mid, kid.end), right, kid.depth + 1);
         len += 1;
     }
     let kids = &mut kids[..len];
@@ -410,8 +477,8 @@ fn node_into<T: Real>(out: &mut Vec<Node>, refs: &mut [PrimRef], base: usize, se
         for (lane, kid) in kids.iter().enumerate() {
             if !matches!(kid.plan, Plan::Leaf) {
                 let local = Set { start: 0, end: kid.len(), ..*kid };
-                let child =
-                    node_into::<T>(out, &mut refs[kid.start..kid.end], base + kid.start, local);
+                let slice = &mut refs[kid.start..kid.end];
+                let child = node_into::<T>(scratch, out, slice, base + kid.start, local);
                 out[index].refs[lane] = child;
             }
         }
@@ -439,7 +506,7 @@ fn node_into<T: Real>(out: &mut Vec<Node>, refs: &mut [PrimRef], base: usize, se
         .into_par_iter()
         .map(|(lane, slice, local, slot)| {
             let mut nodes = Vec::with_capacity(slice.len() / 4 + 1);
-            node_into::<T>(&mut nodes, slice, slot, local);
+            node_into::<T>(&mut Scratch::new(), &mut nodes, slice, slot, local);
             (lane, nodes)
         })
         .collect();
@@ -519,7 +586,7 @@ mod tests {
             })
             .collect();
         let info = Info::of(&v);
-        let plan = plan(&v, &info, 0);
+        let plan = plan(&mut Scratch::new(), &v, &info, info.half_area(), 0);
         assert!(matches!(plan, Plan::Sah { axis: 0, .. }), "{plan:?}");
         let (mid, l, r) = split(&mut v, plan);
         assert_eq!(mid, 32);

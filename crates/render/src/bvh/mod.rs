@@ -111,8 +111,9 @@ pub use node::{MAX_SLOTS, WIDTH};
 use build::{Info, PARALLEL_MIN, PrimRef};
 use node::{Node, is_leaf, leaf_slots};
 
-/// Number of bins per axis in the SAH build.
-pub const BINS: usize = 16;
+/// Largest number of bins per axis in the SAH build (sets of at least 4096 primitives; 16
+/// bins from 256, 8 below, at most one per primitive).
+pub const BINS: usize = 32;
 /// Largest number of primitives in a leaf.
 pub const MAX_LEAF: usize = 8;
 /// Largest number of binary splits above a leaf; at most this many nodes lie on a path from

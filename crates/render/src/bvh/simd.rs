@@ -9,8 +9,28 @@ use core::arch::x86_64::*;
 #[repr(transparent)]
 pub struct F4(#[cfg(target_arch = "x86_64")] __m128, #[cfg(not(target_arch = "x86_64"))] [f32; 4]);
 
+impl F4 {
+    /// Every lane `+inf`.
+    pub const INFINITY: F4 = F4::from_array_const([f32::INFINITY; 4]);
+    /// Every lane `-inf`.
+    pub const NEG_INFINITY: F4 = F4::from_array_const([f32::NEG_INFINITY; 4]);
+
+    /// Half the surface area of the box from `self` to `hi` (lanes 0 to 2), for a box that
+    /// is not empty.
+    #[inline(always)]
+    pub fn half_area(self, hi: Self) -> f32 {
+        let [x, y, z, _] = hi.sub(self).to_array();
+        x * y + y * z + z * x
+    }
+}
+
 #[cfg(target_arch = "x86_64")]
 impl F4 {
+    const fn from_array_const(a: [f32; 4]) -> Self {
+        // SAFETY: `__m128` is 16 bytes of four f32 lanes, as is `[f32; 4]`.
+        Self(unsafe { core::mem::transmute::<[f32; 4], __m128>(a) })
+    }
+
     #[inline(always)]
     pub fn new(a: [f32; 4]) -> Self {
         // SAFETY (here and below): SSE and SSE2 are part of every x86-64 target.
@@ -50,6 +70,10 @@ impl F4 {
     pub fn mul(self, other: Self) -> Self {
         Self(unsafe { _mm_mul_ps(self.0, other.0) })
     }
+    #[inline(always)]
+    pub fn div(self, other: Self) -> Self {
+        Self(unsafe { _mm_div_ps(self.0, other.0) })
+    }
     /// Truncation towards zero, clamped to `0..=max` (NaN gives 0).
     #[inline(always)]
     pub fn bins(self, max: i32) -> [u32; 4] {
@@ -69,6 +93,10 @@ impl F4 {
 
 #[cfg(not(target_arch = "x86_64"))]
 impl F4 {
+    const fn from_array_const(a: [f32; 4]) -> Self {
+        Self(a)
+    }
+
     #[inline(always)]
     pub fn new(a: [f32; 4]) -> Self {
         Self(a)
@@ -100,6 +128,10 @@ impl F4 {
     #[inline(always)]
     pub fn mul(self, other: Self) -> Self {
         Self(core::array::from_fn(|i| self.0[i] * other.0[i]))
+    }
+    #[inline(always)]
+    pub fn div(self, other: Self) -> Self {
+        Self(core::array::from_fn(|i| self.0[i] / other.0[i]))
     }
     #[inline(always)]
     pub fn bins(self, max: i32) -> [u32; 4] {
