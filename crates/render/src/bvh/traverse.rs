@@ -289,19 +289,33 @@ where
                     current = node.refs[first];
                     continue;
                 }
-                // Two or more: visit the nearest now, stack the others farthest first.
+                let second = rest.trailing_zeros() as usize;
+                if rest & (rest - 1) == 0 {
+                    // Two (the common case): the nearer now, the other on the stack.
+                    let (near, far) =
+                        if t[second] < t[first] { (second, first) } else { (first, second) };
+                    stack.push((node.refs[far], t[far]));
+                    current = node.refs[near];
+                    continue;
+                }
+                // Three or more: sort by distance (insertion sort on keys that carry the lane
+                // in their low bits), visit the nearest now, stack the others farthest first.
                 let mut keys = [0u64; WIDTH];
                 let mut n = 0;
                 let mut m = mask;
                 while m != 0 {
                     let i = m.trailing_zeros() as usize;
-                    keys[n] = t[i].key() | i as u64;
+                    let key = t[i].key() | i as u64;
+                    let mut j = n;
+                    while j > 0 && keys[j - 1] > key {
+                        keys[j] = keys[j - 1];
+                        j -= 1;
+                    }
+                    keys[j] = key;
                     n += 1;
                     m &= m - 1;
                 }
-                let keys = &mut keys[..n];
-                keys.sort_unstable();
-                for &key in keys[1..].iter().rev() {
+                for &key in keys[1..n].iter().rev() {
                     let i = (key & 7) as usize;
                     stack.push((node.refs[i], t[i]));
                 }
