@@ -110,9 +110,11 @@ impl Job for BenchBackend<'_> {
             let mut g = self.criterion.benchmark_group(&group);
             g.sampling_mode(SamplingMode::Flat).throughput(Throughput::Elements(rays.len() as u64));
             if !self.quick {
+                // One iteration traces a million rays (tens of milliseconds): ten samples of a
+                // few iterations each are plenty, and keep the full run near twenty minutes.
                 g.sample_size(10)
-                    .warm_up_time(Duration::from_secs(1))
-                    .measurement_time(Duration::from_secs(3));
+                    .warm_up_time(Duration::from_millis(500))
+                    .measurement_time(Duration::from_secs(2));
             }
             let threads_all = self.pool.map_or(1, rayon::ThreadPool::current_num_threads);
             let mut thread_counts = vec![1];

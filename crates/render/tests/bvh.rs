@@ -438,3 +438,44 @@ fn real_meshes_match_the_oracle() {
         assert!(hits > ray_count / 5 && hits32 > ray_count / 5, "{name}: {hits} {hits32}");
     }
 }
+
+/// The tree, node for node, does not depend on how many threads build it (subtrees built in
+/// parallel are appended in the order the sequential build writes them).
+#[test]
+fn build_does_not_depend_on_the_thread_count() {
+    let mesh = shared_mesh("stanford-bunny.obj");
+    fn same<T: Real>(tris: &[Triangle<T>]) {
+        let pool = |n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
+        let one = pool(1).install(|| render::bvh::Bvh::from_triangles(tris));
+        let four = pool(4).install(|| render::bvh::Bvh::from_triangles(tris));
+        assert_eq!(one.order(), four.order());
+        assert_eq!(one.node_count(), four.node_count());
+        for i in 0..one.node_count() {
+            assert_eq!(one.children(i), four.children(i), "node {i}");
+        }
+        assert_eq!((one.depth(), one.leaf_count()), (four.depth(), four.leaf_count()));
+    }
+    same(&mesh.triangles::<f32>());
+    same(&mesh.triangles::<f64>());
+}
+
+/// Rays with a non-finite coordinate, and a NaN limit, meet nothing (and do not panic).
+#[test]
+fn non_finite_rays_meet_nothing() {
+    let t = Triangle::new([0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]);
+    let accel = Accel::build(mt::<f64>(), &[t; 20]);
+    let nan = f64::NAN;
+    for ray in [
+        Ray::new([nan, 0.25, 0.0], [0.0, 0.0, 1.0]),
+        Ray::new([0.25, 0.25, 0.0], [0.0, nan, 1.0]),
+        Ray::new([0.25, 0.25, f64::NEG_INFINITY], [0.0, 0.0, 1.0]),
+        Ray::new([0.25, 0.25, 0.0], [0.0, 0.0, f64::INFINITY]),
+    ] {
+        assert_eq!(accel.closest_hit(&ray), None, "{ray:?}");
+        assert!(!accel.any_hit(&ray, f64::INFINITY), "{ray:?}");
+    }
+    let ray = Ray::new([0.25, 0.25, 0.0], [0.0, 0.0, 1.0]);
+    assert!(accel.closest_hit(&ray).is_some());
+    assert_eq!(accel.closest_hit_within(&ray, nan), None);
+    assert!(!accel.any_hit(&ray, nan));
+}

@@ -502,7 +502,7 @@ fn node_into<T: Real>(
             jobs.push((lane, mine, Set { start: 0, end: kid.len(), ..kid }, base + kid.start));
         }
     }
-    let built: Vec<(usize, Vec<Node>)> = jobs
+    let mut built: Vec<(usize, Vec<Node>)> = jobs
         .into_par_iter()
         .map(|(lane, slice, local, slot)| {
             let mut nodes = Vec::with_capacity(slice.len() / 4 + 1);
@@ -510,6 +510,9 @@ fn node_into<T: Real>(
             (lane, nodes)
         })
         .collect();
+    // In lane order, as the sequential build appends them: the layout does not depend on the
+    // number of threads.
+    built.sort_unstable_by_key(|&(lane, _)| lane);
     for (lane, mut nodes) in built {
         let offset = out.len() as u32;
         for node in &mut nodes {
