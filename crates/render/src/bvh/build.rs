@@ -244,7 +244,8 @@ const _: () = assert!(BINS.is_power_of_two());
 /// Bins and sweep buffers reused from set to set (one per thread of the build): a set clears
 /// only the bins it uses, so small sets cost little.
 pub struct Scratch {
-    axes: [AxisBins; 3],
+    /// Two sets of bins for the three axes (see `best_split`).
+    axes: [[AxisBins; 3]; 4],
     /// `right_cost[i]`: primitives right of boundary `i` times the half area of their box.
     right_cost: [f32; BINS],
 }
@@ -253,7 +254,7 @@ impl Scratch {
     pub fn new() -> Self {
         let empty =
             AxisBins { lo: [F4::INFINITY; BINS], hi: [F4::NEG_INFINITY; BINS], count: [0; BINS] };
-        Self { axes: [empty; 3], right_cost: [0.0; BINS] }
+        Self { axes: [[empty; 3]; 4], right_cost: [0.0; BINS] }
     }
 }
 
@@ -298,32 +299,48 @@ fn best_split(scratch: &mut Scratch, refs: &[PrimRef], info: &Info) -> Option<(P
     let n = refs.len() as u32;
     let count = bin_count(refs.len());
     let binning = Binning::new(info, count);
-    let [x, y, z] = &mut scratch.axes;
-    for i in 0..count {
-        for axis in [&mut *x, &mut *y, &mut *z] {
-            axis.lo[i] = F4::INFINITY;
-            axis.hi[i] = F4::NEG_INFINITY;
-            axis.count[i] = 0;
+    // Large sets alternate between two sets of bins: consecutive primitives of a mesh often
+    // fall into the same bins, and one set would chain every update through memory.
+    let split = refs.len() >= 64;
+    for axes in if split { &mut scratch.axes[..] } else { &mut scratch.axes[..1] } {
+        for axis in axes {
+            axis.lo[..count].fill(F4::INFINITY);
+            axis.hi[..count].fill(F4::NEG_INFINITY);
+            axis.count[..count].fill(0);
         }
     }
-    for r in refs {
-        let b = binning.bins(r).map(|b| b as usize & (BINS - 1));
-        let (lo, hi) = (r.lo(), r.hi());
-        x.lo[b[0]] = x.lo[b[0]].min(lo);
-        x.hi[b[0]] = x.hi[b[0]].max(hi);
-        x.count[b[0]] += 1;
-        y.lo[b[1]] = y.lo[b[1]].min(lo);
-        y.hi[b[1]] = y.hi[b[1]].max(hi);
-        y.count[b[1]] += 1;
-        z.lo[b[2]] = z.lo[b[2]].min(lo);
-        z.hi[b[2]] = z.hi[b[2]].max(hi);
-        z.count[b[2]] += 1;
+    let [first, rest @ ..] = &mut scratch.axes;
+    if split {
+        let [second, third, fourth] = rest;
+        let mut quads = refs.chunks_exact(4);
+        for quad in &mut quads {
+            bin_one(first, &binning, &quad[0]);
+            bin_one(second, &binning, &quad[1]);
+            bin_one(third, &binning, &quad[2]);
+            bin_one(fourth, &binning, &quad[3]);
+        }
+        for r in quads.remainder() {
+            bin_one(first, &binning, r);
+        }
+        for other in [&*second, &*third, &*fourth] {
+            for (a, b) in first.iter_mut().zip(other.iter()) {
+                for i in 0..count {
+                    a.lo[i] = a.lo[i].min(b.lo[i]);
+                    a.hi[i] = a.hi[i].max(b.hi[i]);
+                    a.count[i] += b.count[i];
+                }
+            }
+        }
+    } else {
+        for r in refs {
+            bin_one(first, &binning, r);
+        }
     }
     // (axis, last bin on the left, cost n_l A_l + n_r A_r)
     let mut best = (0, 0, f32::INFINITY);
     let scale = binning.scale.to_array();
     let right_cost = &mut scratch.right_cost;
-    for (axis, bins) in scratch.axes.iter().enumerate() {
+    for (axis, bins) in scratch.axes[0].iter().enumerate() {
         if scale[axis] == 0.0 {
             continue;
         }
@@ -358,6 +375,18 @@ fn best_split(scratch: &mut Scratch, refs: &[PrimRef], info: &Info) -> Option<(P
     }
     let (axis, bin, cost) = best;
     (cost < f32::INFINITY).then(|| (Plan::Sah { axis, bin: bin as u32, binning }, f64::from(cost)))
+}
+
+/// Adds `r` to its bin along each axis.
+#[inline(always)]
+fn bin_one(axes: &mut [AxisBins; 3], binning: &Binning, r: &PrimRef) {
+    let b = binning.bins(r).map(|b| b as usize & (BINS - 1));
+    let (lo, hi) = (r.lo(), r.hi());
+    for (axis, &b) in axes.iter_mut().zip(&b) {
+        axis.lo[b] = axis.lo[b].min(lo);
+        axis.hi[b] = axis.hi[b].max(hi);
+        axis.count[b] += 1;
+    }
 }
 
 /// Bins per axis for a set of `n` primitives: many where the split decides much (near the
