@@ -196,6 +196,8 @@ enum Plan {
     Sah { axis: usize, bin: u32, binning: Binning },
     /// Split it at the median centroid along `axis` (SAH unusable or not allowed).
     Median { axis: usize },
+    /// Split it before position `mid` (a small set, already sorted by `sweep`).
+    At { mid: usize },
 }
 
 /// A planned set: `refs[start..end]` of the slice being built, its description, its plan and
@@ -214,13 +216,13 @@ struct Set {
 impl Set {
     fn new(
         scratch: &mut Scratch,
-        refs: &[PrimRef],
+        refs: &mut [PrimRef],
         (start, end): (usize, usize),
         info: Info,
         depth: usize,
     ) -> Self {
         let area = info.half_area();
-        let plan = plan(scratch, &refs[start..end], &info, area, depth);
+        let plan = plan(scratch, &mut refs[start..end], &info, area, depth);
         Self { start, end, info, area, plan, depth }
     }
 
@@ -260,7 +262,7 @@ impl Scratch {
 
 /// Decides whether `refs` (described by `info`, `depth` splits below the root) becomes a leaf
 /// or is split, and how.
-fn plan(scratch: &mut Scratch, refs: &[PrimRef], info: &Info, area: f64, depth: usize) -> Plan {
+fn plan(scratch: &mut Scratch, refs: &mut [PrimRef], info: &Info, area: f64, depth: usize) -> Plan {
     let n = refs.len();
     if n == 1 {
         return Plan::Leaf;
@@ -276,13 +278,9 @@ fn plan(scratch: &mut Scratch, refs: &[PrimRef], info: &Info, area: f64, depth: 
     if !sah_allowed || flat {
         return median();
     }
-    if n == 2 {
-        // The only split puts each primitive alone: no need to bin.
-        let cost = refs[0].lo().half_area(refs[0].hi()) + refs[1].lo().half_area(refs[1].hi());
-        let split = area > 0.0 && TRAVERSAL_COST + f64::from(cost) / area < 2.0;
-        return if split { Plan::Median { axis: widest } } else { Plan::Leaf };
-    }
-    match best_split(scratch, refs, info) {
+    let found =
+        if n <= SWEEP_MAX { Some(sweep(refs, widest)) } else { best_split(scratch, refs, info) };
+    match found {
         Some((plan, cost)) => {
             let split_cost = if area > 0.0 { TRAVERSAL_COST + cost / area } else { TRAVERSAL_COST };
             if n > MAX_LEAF || split_cost < n as f64 { plan } else { Plan::Leaf }
@@ -291,6 +289,49 @@ fn plan(scratch: &mut Scratch, refs: &[PrimRef], info: &Info, area: f64, depth: 
         // binning cannot separate them).
         None => median(),
     }
+}
+
+/// Sets of at most this many primitives are planned by [`sweep`] rather than by binning.
+const SWEEP_MAX: usize = 16;
+
+/// The exact SAH split of a small set along `axis`: sorts `refs` by centroid (insertion sort:
+/// the set is small, and often sorted already, its parent having been sorted along the same
+/// axis), then sweeps every boundary. Far cheaper than binning three axes for the many small
+/// sets near the leaves, and as good: with at most [`SWEEP_MAX`] primitives every boundary
+/// is tried. Returns the plan and its cost `n_l A_l + n_r A_r`.
+fn sweep(refs: &mut [PrimRef], axis: usize) -> (Plan, f64) {
+    let n = refs.len();
+    debug_assert!((2..=SWEEP_MAX).contains(&n));
+    let key = |r: &PrimRef| r.lo[axis] + r.hi[axis];
+    for i in 1..n {
+        let mut j = i;
+        let k = key(&refs[i]);
+        while j > 0 && key(&refs[j - 1]) > k {
+            j -= 1;
+        }
+        if j < i {
+            refs[j..=i].rotate_right(1);
+        }
+    }
+    // right_cost[i]: primitives i + 1.. times the half area of their box.
+    let mut right_cost = [0.0f32; SWEEP_MAX];
+    let (mut lo, mut hi) = (F4::INFINITY, F4::NEG_INFINITY);
+    for i in (1..n).rev() {
+        lo = lo.min(refs[i].lo());
+        hi = hi.max(refs[i].hi());
+        right_cost[i - 1] = (n - i) as f32 * lo.half_area(hi);
+    }
+    let (mut lo, mut hi) = (F4::INFINITY, F4::NEG_INFINITY);
+    let mut best = (1, f32::INFINITY);
+    for (i, r) in refs[..n - 1].iter().enumerate() {
+        lo = lo.min(r.lo());
+        hi = hi.max(r.hi());
+        let cost = (i + 1) as f32 * lo.half_area(hi) + right_cost[i];
+        if cost < best.1 {
+            best = (i + 1, cost);
+        }
+    }
+    (Plan::At { mid: best.0 }, f64::from(best.1))
 }
 
 /// The cheapest binned SAH split over all axes and its cost `n_l A_l + n_r A_r` (half areas);
@@ -413,6 +454,7 @@ fn split(refs: &mut [PrimRef], plan: Plan) -> (usize, Info, Info) {
             });
             (mid, Info::of(&refs[..mid]), Info::of(&refs[mid..]))
         }
+        Plan::At { mid } => (mid, Info::of(&refs[..mid]), Info::of(&refs[mid..])),
         Plan::Leaf => unreachable!("leaves are never split"),
     }
 }
@@ -618,11 +660,51 @@ mod tests {
             })
             .collect();
         let info = Info::of(&v);
-        let plan = plan(&mut Scratch::new(), &v, &info, info.half_area(), 0);
+        let plan = plan(&mut Scratch::new(), &mut v, &info, info.half_area(), 0);
         assert!(matches!(plan, Plan::Sah { axis: 0, .. }), "{plan:?}");
         let (mid, l, r) = split(&mut v, plan);
         assert_eq!(mid, 32);
         assert!(l.bounds().1[0] < 1.0 && r.bounds().0[0] > 99.0);
+    }
+
+    /// The sweep's split is the cheapest of all boundaries of the centroid order, computed
+    /// independently in `f64`.
+    #[test]
+    fn sweep_finds_the_cheapest_boundary() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(9);
+        for n in 2..=SWEEP_MAX {
+            for axis in 0..3 {
+                let mut v: Vec<PrimRef> = (0..n as u32)
+                    .map(|i| {
+                        let c: [f64; 3] = core::array::from_fn(|_| rng.random_range(-1.0..1.0));
+                        let h: [f64; 3] = core::array::from_fn(|_| rng.random_range(0.0..0.3));
+                        let b = Aabb {
+                            min: core::array::from_fn(|k| c[k] - h[k]),
+                            max: core::array::from_fn(|k| c[k] + h[k]),
+                        };
+                        PrimRef::new(&b, i)
+                    })
+                    .collect();
+                let (Plan::At { mid }, cost) = sweep(&mut v, axis) else { panic!() };
+                let c = |r: &PrimRef| f64::from(r.lo[axis]) + f64::from(r.hi[axis]);
+                assert!(v.windows(2).all(|w| c(&w[0]) <= c(&w[1])), "sorted by centroid");
+                let side = |rs: &[PrimRef]| {
+                    let lo: [f64; 3] = core::array::from_fn(|k| {
+                        rs.iter().map(|r| f64::from(r.lo[k])).fold(f64::INFINITY, f64::min)
+                    });
+                    let hi: [f64; 3] = core::array::from_fn(|k| {
+                        rs.iter().map(|r| f64::from(r.hi[k])).fold(f64::NEG_INFINITY, f64::max)
+                    });
+                    let [x, y, z]: [f64; 3] = core::array::from_fn(|k| hi[k] - lo[k]);
+                    rs.len() as f64 * (x * y + y * z + z * x)
+                };
+                let costs: Vec<f64> = (1..n).map(|k| side(&v[..k]) + side(&v[k..])).collect();
+                let best = costs.iter().copied().fold(f64::INFINITY, f64::min);
+                assert!((cost - best).abs() <= 1e-5 * best, "n {n}: {cost} vs {best}");
+                assert!((costs[mid - 1] - best).abs() <= 1e-5 * best, "n {n}: boundary {mid}");
+            }
+        }
     }
 
     #[test]
