@@ -24,8 +24,11 @@ use super::node::{Node, WIDTH, f32_down, f32_up, leaf_ref};
 use super::simd::F4;
 use super::{BINS, MAX_DEPTH, MAX_LEAF, PAD_ULPS};
 
-/// SAH cost of one binary split's traversal, relative to one primitive test.
-const TRAVERSAL_COST: f64 = 1.0;
+/// SAH cost of one binary split's traversal, relative to one primitive test. Measured, not
+/// derived: on the bunny (one thread, `la` f32) 1.0 gave 12,396 nodes and 1.8 triangles per
+/// leaf; 3.0 gives 4,951 nodes and 4.3 per leaf, 3.1 MB less memory, incoherent rays about 25%
+/// faster (they wait on memory) and primary rays about 7% faster; 4.0 and 6.0 were no better.
+const TRAVERSAL_COST: f64 = 3.0;
 
 /// Sets at least this large build their children in parallel (when the pool has threads).
 pub const PARALLEL_MIN: usize = 8192;
