@@ -47,10 +47,11 @@
 //!   | `a + b`, `a - b`, `-a` | component-wise | |
 //!   | `a * s`, `s * a`, `a / s` | scaling by a scalar `s` | |
 //!
-//!   Left and right contractions, the scalar product and the commutator are methods of
-//!   [`g3::Multivector`] (`left_contraction`, `right_contraction`, `scalar_product`,
-//!   `commutator`). Rust's precedence is fixed: `*` and `/` bind tighter than `+` and `-`, then
-//!   come `&`, `^` and `|`, in that order. So `a + b ^ c` is `(a + b) ^ c`, not the usual
+//!   Left and right contractions, the scalar product and the commutator are methods
+//!   (`a.left_contraction(b)`, `right_contraction`, `scalar_product`, `commutator`) on every
+//!   pair of types where they are not identically zero, through the traits listed in
+//!   [`g3::contraction`]. Rust's precedence is fixed: `*` and `/` bind tighter than `+` and
+//!   `-`, then come `&`, `^` and `|`, in that order. So `a + b ^ c` is `(a + b) ^ c`, not the usual
 //!   mathematical reading `a + (b ∧ c)`: write the parentheses.
 //! - **Inner product.** `|` is the report's (figure 2.7, Hestenes' inner product): for an
 //!   `r`-blade and an `s`-blade, the grade `|r - s|` part of the geometric product, and zero

@@ -142,18 +142,4 @@ impl<T: Scalar> Bivector<T> {
         let k = if angle > T::EPSILON { sin / angle } else { T::ONE };
         Rotor::new(cos, self.e12 * k, self.e23 * k, self.e31 * k)
     }
-
-    /// The commutator product `B × C = (B C - C B) / 2`, which for two bivectors is the
-    /// bivector part of `B C` (the cross product of their normals, dualised back).
-    #[must_use]
-    #[inline]
-    pub fn commutator(self, c: Self) -> Self {
-        // From the B C expansion (see the geometric product of two bivectors): the scalar part
-        // is symmetric and cancels, the bivector part is antisymmetric and survives.
-        Self::new(
-            self.e31 * c.e23 - self.e23 * c.e31,
-            self.e12 * c.e31 - self.e31 * c.e12,
-            self.e23 * c.e12 - self.e12 * c.e23,
-        )
-    }
 }

@@ -4,8 +4,19 @@
 //! product, and it is zero when either side is a scalar (report figure 2.7; this is Hestenes'
 //! inner product, not a contraction). So `e1 | e12 = e2`, `e12 | e1 = -e2` and
 //! `e12 | e12 = -1`: two bivectors of the same orientation have a *negative* inner product.
-//! The contractions are the methods [`Multivector::left_contraction`] and
-//! [`Multivector::right_contraction`].
+//! The contractions are the methods `left_contraction` and `right_contraction` (see
+//! [`contraction`](crate::g3::contraction)).
+//!
+//! Every pair of types has the operator; a rotor's scalar part takes no part. Result types,
+//! `a | b` (`T` is the scalar):
+//!
+//! | `a` \ `b` | Vector | Bivector | Trivector | Rotor | Multivector |
+//! |---|---|---|---|---|---|
+//! | Vector | `T` | Vector | Bivector | Vector | Multivector |
+//! | Bivector | Vector | `T` | Vector | `T` | Multivector |
+//! | Trivector | Bivector | Vector | `T` | Vector | Multivector |
+//! | Rotor | Vector | `T` | Vector | `T` | Multivector |
+//! | Multivector | Multivector | Multivector | Multivector | Multivector | Multivector |
 
 // The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel is a sum of
 // products of coefficients, which is what clippy's heuristic flags.
@@ -122,6 +133,83 @@ impl<T: Scalar> BitOr<Trivector<T>> for Trivector<T> {
         // Blade products: e123 · e123 = -1
         let a = self;
         -a.e123 * b.e123
+    }
+}
+
+/// Inner product (the report's) `Vector | Rotor -> Vector`.
+impl<T: Scalar> BitOr<Rotor<T>> for Vector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitor(self, b: Rotor<T>) -> Vector<T> {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Vector | Bivector`.
+        self | b.bivector()
+    }
+}
+
+/// Inner product (the report's) `Bivector | Rotor -> scalar`.
+impl<T: Scalar> BitOr<Rotor<T>> for Bivector<T> {
+    type Output = T;
+    #[inline]
+    fn bitor(self, b: Rotor<T>) -> T {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Bivector | Bivector`.
+        self | b.bivector()
+    }
+}
+
+/// Inner product (the report's) `Trivector | Rotor -> Vector`.
+impl<T: Scalar> BitOr<Rotor<T>> for Trivector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitor(self, b: Rotor<T>) -> Vector<T> {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Trivector | Bivector`.
+        self | b.bivector()
+    }
+}
+
+/// Inner product (the report's) `Rotor | Vector -> Vector`.
+impl<T: Scalar> BitOr<Vector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitor(self, b: Vector<T>) -> Vector<T> {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Bivector | Vector`.
+        self.bivector() | b
+    }
+}
+
+/// Inner product (the report's) `Rotor | Bivector -> scalar`.
+impl<T: Scalar> BitOr<Bivector<T>> for Rotor<T> {
+    type Output = T;
+    #[inline]
+    fn bitor(self, b: Bivector<T>) -> T {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Bivector | Bivector`.
+        self.bivector() | b
+    }
+}
+
+/// Inner product (the report's) `Rotor | Trivector -> Vector`.
+impl<T: Scalar> BitOr<Trivector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitor(self, b: Trivector<T>) -> Vector<T> {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotor's bivector part takes part: `Bivector | Trivector`.
+        self.bivector() | b
+    }
+}
+
+/// Inner product (the report's) `Rotor | Rotor -> scalar`.
+impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
+    type Output = T;
+    #[inline]
+    fn bitor(self, b: Rotor<T>) -> T {
+        // A scalar's inner product with anything is zero (figure 2.7, row s), so only the
+        // rotors' bivector parts take part: `Bivector | Bivector`.
+        self.bivector() | b.bivector()
     }
 }
 

@@ -9,11 +9,13 @@
 //! | [`Rotor`] | 0, 2 | `s, e12, e23, e31` |
 //! | [`Multivector`] | 0-3 | all eight, report order |
 //!
-//! See the crate docs for the conventions and the operator table, and [`geometry`] for lines,
-//! planes and triangles.
+//! See the crate docs for the conventions and the operator table, [`outer`], [`inner`] and
+//! [`regressive`] for which pairs of types each operator joins, [`contraction`] for the
+//! products that are methods (contractions, scalar product, commutator), and [`geometry`] for
+//! lines, planes and triangles.
 
 mod bivector;
-mod contraction;
+pub mod contraction;
 mod convert;
 pub mod geometric;
 pub mod geometry;
@@ -31,6 +33,7 @@ mod trivector;
 mod vector;
 
 pub use bivector::Bivector;
+pub use contraction::{Commutator, LeftContraction, RightContraction, ScalarProduct};
 pub use convert::NarrowError;
 pub use multivector::{BASIS, GRADES, Multivector};
 pub use rotor::Rotor;

@@ -6,6 +6,16 @@
 //! plane and a line in a point (bivector & vector is a scalar), and the pseudoscalar `I` is
 //! its identity (`I & x = x`). For example `e12 & e23 = -e2` and `e12 & e3 = 1`. Pairs whose
 //! meet always vanishes in 3D (vector & vector) have no operator.
+//!
+//! Result types, `a & b` (`T` is the scalar, `—` no operator):
+//!
+//! | `a` \ `b` | Vector | Bivector | Trivector | Rotor | Multivector |
+//! |---|---|---|---|---|---|
+//! | Vector | — | `T` | Vector | `T` | Multivector |
+//! | Bivector | `T` | Vector | Bivector | Vector | Multivector |
+//! | Trivector | Vector | Bivector | Trivector | Rotor | Multivector |
+//! | Rotor | `T` | Vector | Rotor | Vector | Multivector |
+//! | Multivector | Multivector | Multivector | Multivector | Multivector | Multivector |
 
 // The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel is a sum of
 // products of coefficients, which is what clippy's heuristic flags.
@@ -106,6 +116,83 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Trivector<T> {
         // Blade meets: e123 ∨ e123 = e123
         let a = self;
         Trivector { e123: a.e123 * b.e123 }
+    }
+}
+
+/// Regressive product `Vector & Rotor -> scalar`.
+impl<T: Scalar> BitAnd<Rotor<T>> for Vector<T> {
+    type Output = T;
+    #[inline]
+    fn bitand(self, b: Rotor<T>) -> T {
+        // A scalar meets only the pseudoscalar (`s & x = 0` for `x` of grade below 3), so
+        // only the rotor's bivector part takes part: `Vector & Bivector`.
+        self & b.bivector()
+    }
+}
+
+/// Regressive product `Bivector & Rotor -> Vector`.
+impl<T: Scalar> BitAnd<Rotor<T>> for Bivector<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitand(self, b: Rotor<T>) -> Vector<T> {
+        // A scalar meets only the pseudoscalar (`s & x = 0` for `x` of grade below 3), so
+        // only the rotor's bivector part takes part: `Bivector & Bivector`.
+        self & b.bivector()
+    }
+}
+
+/// Regressive product `Trivector & Rotor -> Rotor`.
+impl<T: Scalar> BitAnd<Rotor<T>> for Trivector<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn bitand(self, b: Rotor<T>) -> Rotor<T> {
+        // Blade meets: e123 ∨ s = 1, e123 ∨ e12 = e12, e123 ∨ e23 = e23, e123 ∨ e31 = e31:
+        //   the pseudoscalar is the identity of the meet, so this is scaling.
+        b * self.e123
+    }
+}
+
+/// Regressive product `Rotor & Vector -> scalar`.
+impl<T: Scalar> BitAnd<Vector<T>> for Rotor<T> {
+    type Output = T;
+    #[inline]
+    fn bitand(self, b: Vector<T>) -> T {
+        // A scalar meets only the pseudoscalar (`s & x = 0` for `x` of grade below 3), so
+        // only the rotor's bivector part takes part: `Bivector & Vector`.
+        self.bivector() & b
+    }
+}
+
+/// Regressive product `Rotor & Bivector -> Vector`.
+impl<T: Scalar> BitAnd<Bivector<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitand(self, b: Bivector<T>) -> Vector<T> {
+        // A scalar meets only the pseudoscalar (`s & x = 0` for `x` of grade below 3), so
+        // only the rotor's bivector part takes part: `Bivector & Bivector`.
+        self.bivector() & b
+    }
+}
+
+/// Regressive product `Rotor & Trivector -> Rotor`.
+impl<T: Scalar> BitAnd<Trivector<T>> for Rotor<T> {
+    type Output = Rotor<T>;
+    #[inline]
+    fn bitand(self, b: Trivector<T>) -> Rotor<T> {
+        // Blade meets: s ∨ e123 = 1, e12 ∨ e123 = e12, e23 ∨ e123 = e23, e31 ∨ e123 = e31:
+        //   the pseudoscalar is the identity of the meet, so this is scaling.
+        self * b.e123
+    }
+}
+
+/// Regressive product `Rotor & Rotor -> Vector`.
+impl<T: Scalar> BitAnd<Rotor<T>> for Rotor<T> {
+    type Output = Vector<T>;
+    #[inline]
+    fn bitand(self, b: Rotor<T>) -> Vector<T> {
+        // A scalar meets only the pseudoscalar (`s & x = 0` for `x` of grade below 3), so
+        // only the rotors' bivector parts take part: `Bivector & Bivector`.
+        self.bivector() & b.bivector()
     }
 }
 
