@@ -68,6 +68,9 @@
 use core::fmt::{Debug, Display};
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
+#[cfg(feature = "conformance")]
+pub mod conformance;
+
 /// A floating-point scalar: implemented for `f32` and `f64`.
 pub trait Real:
     Copy

@@ -20,10 +20,7 @@ macro_rules! for_each_kernel {
     };
 }
 
-/// `"ga f32"`, `"ga-report f64"`, ...: names a kernel in assertion messages.
-pub fn label<I: Intersector>() -> String {
-    format!("{} {}", I::NAME, core::any::type_name::<I::Real>())
-}
+pub use intersect::conformance::label;
 
 /// Whether `T` is `f32`.
 pub fn is_f32<T: Real>() -> bool {

@@ -3,7 +3,7 @@
 
 #![allow(dead_code)] // Each test file uses a different part of this module.
 
-use intersect::{Intersector, Ray, Real, Triangle};
+use intersect::{Ray, Real, Triangle};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
@@ -18,10 +18,7 @@ macro_rules! for_each_kernel {
     };
 }
 
-/// `"la f32"`, `"la-mt f64"`, ...: names a kernel in assertion messages.
-pub fn label<I: Intersector>() -> String {
-    format!("{} {}", I::NAME, core::any::type_name::<I::Real>())
-}
+pub use intersect::conformance::label;
 
 /// Relative precision the tests expect of a kernel in precision `T`: `1e-5` for `f32`,
 /// `1e-12` for `f64` (about 100 and 4500 ulps: room for the conditioning of random
