@@ -23,7 +23,6 @@
 use std::path::Path;
 use std::time::{Duration, SystemTime};
 
-use criterion::measurement::{Measurement, ValueFormatter, WallTime};
 use criterion::{BenchmarkGroup, Criterion, Throughput};
 use intersect::{Intersector, Ray, Triangle};
 use raytrace::Job;
@@ -34,67 +33,14 @@ use wedge_benches::accuracy::rays::random_rays;
 use wedge_benches::accuracy::runner::Subject;
 use wedge_benches::accuracy::suite::{SEED, Sizes, accuracy_rows, stability_rows};
 use wedge_benches::accuracy::summary::write_summary;
-use wedge_benches::{
-    bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
-};
+use wedge_benches::clock::{ThreadClock, configured};
+use wedge_benches::{cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv};
 
 /// Rays per timed iteration: the first rays of the suite's random set.
 const TIMED_RAYS: usize = 2048;
 
 /// Criterion's group name.
 const GROUP: &str = "accuracy_ns_per_ray";
-
-/// Criterion measurement: the calling thread's CPU time, or wall time with
-/// `WEDGE_BENCH_WALL=1`.
-struct ThreadClock {
-    wall: Option<std::time::Instant>,
-}
-
-impl ThreadClock {
-    fn from_env() -> Self {
-        let wall = std::env::var("WEDGE_BENCH_WALL").is_ok_and(|v| v == "1");
-        Self { wall: wall.then(std::time::Instant::now) }
-    }
-
-    fn now(&self) -> Duration {
-        if let Some(epoch) = self.wall {
-            return epoch.elapsed();
-        }
-        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-        // SAFETY: `ts` is a valid, writable timespec, and CLOCK_THREAD_CPUTIME_ID is a clock
-        // every Linux kernel provides for the calling thread.
-        let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &raw mut ts) };
-        assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
-        let secs = u64::try_from(ts.tv_sec).expect("a thread's CPU time is not negative");
-        let nanos = u32::try_from(ts.tv_nsec).expect("nanoseconds below one second");
-        Duration::new(secs, nanos)
-    }
-}
-
-impl Measurement for ThreadClock {
-    type Intermediate = Duration;
-    type Value = Duration;
-
-    fn start(&self) -> Duration {
-        self.now()
-    }
-    fn end(&self, start: Duration) -> Duration {
-        self.now().saturating_sub(start)
-    }
-    fn add(&self, a: &Duration, b: &Duration) -> Duration {
-        *a + *b
-    }
-    fn zero(&self) -> Duration {
-        Duration::ZERO
-    }
-    fn to_f64(&self, value: &Duration) -> f64 {
-        value.as_nanos() as f64
-    }
-    fn formatter(&self) -> &dyn ValueFormatter {
-        // Values are durations in nanoseconds, as criterion's wall clock reports them.
-        WallTime.formatter()
-    }
-}
 
 /// Registers the closest-hit timing of one back end.
 struct TimeJob<'a, 'g> {
@@ -141,14 +87,9 @@ fn main() {
     // 1. Time every subject on the same rays.
     let triangles = bunny.triangle_list();
     let timed = random_rays(&bunny, TIMED_RAYS, SEED);
-    let (warm_up, measurement) =
-        if quick { bench_times() } else { (Duration::from_secs(1), Duration::from_secs(3)) };
-    let mut criterion = Criterion::default()
-        .with_measurement(ThreadClock::from_env())
-        .warm_up_time(warm_up)
-        .measurement_time(measurement)
-        .sample_size(10)
-        .configure_from_args();
+    let full = (Duration::from_secs(1), Duration::from_secs(3));
+    let criterion = Criterion::default().with_measurement(ThreadClock::from_env());
+    let mut criterion = configured(criterion, full).sample_size(10).configure_from_args();
     {
         let mut group = criterion.benchmark_group(GROUP);
         group.throughput(Throughput::Elements(TIMED_RAYS as u64));

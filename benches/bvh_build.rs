@@ -13,6 +13,7 @@ use std::time::{Duration, SystemTime};
 use criterion::{Criterion, SamplingMode};
 use intersect::{Real, Triangle};
 use render::bvh::{Aabb, Bvh};
+use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::BuildRow;
 use wedge_benches::throughput::scenes::{BenchScene, bunny, subdivided};
 use wedge_benches::{
@@ -75,12 +76,7 @@ fn bench_scene<T: Real>(
 
 fn main() {
     let started = SystemTime::now();
-    let (warm_up, measurement) = bench_times();
-    let mut criterion = Criterion::default().warm_up_time(warm_up).measurement_time(measurement);
-    if quick_mode() {
-        criterion = criterion.sample_size(10).nresamples(1000);
-    }
-    let mut criterion = criterion.configure_from_args();
+    let mut criterion = configured(Criterion::default(), bench_times()).configure_from_args();
     let threads = available_parallelism().map_or(1, usize::from);
     let mut counts = vec![1];
     if threads > 1 {

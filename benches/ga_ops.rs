@@ -34,74 +34,18 @@
 use std::hint::black_box;
 use std::time::{Duration, SystemTime};
 
-use criterion::measurement::{Measurement, ValueFormatter, WallTime};
 use criterion::{Criterion, Throughput};
 use ga::g3::{Multivector, Rotor, Vector};
 use glam::{DQuat, DVec3, Quat, Vec3};
+use wedge_benches::clock::{ThreadClock, configured};
 use wedge_benches::{
-    GaOpsRow, SplitMix64, Target, bench_times, cpu_model, criterion_dir, mean_ns, quick_mode,
-    results_dir, write_csv,
+    GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir,
+    write_csv,
 };
 
 /// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
 /// make 32 KiB, the size of L1.
 const BATCH: usize = 256;
-
-/// Criterion measurement: CPU time of the calling thread, or wall time when
-/// `WEDGE_BENCH_WALL=1` (see the module docs for why CPU time is the default).
-struct BenchClock {
-    wall: bool,
-}
-
-impl BenchClock {
-    fn from_env() -> Self {
-        Self { wall: std::env::var("WEDGE_BENCH_WALL").is_ok_and(|v| v == "1") }
-    }
-
-    fn now(&self) -> Duration {
-        if self.wall {
-            return WALL_EPOCH.elapsed();
-        }
-        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-        // SAFETY: `ts` is a valid, writable timespec and the clock id is a constant the kernel
-        // supports for the calling thread.
-        let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &raw mut ts) };
-        assert_eq!(rc, 0, "clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
-        let (secs, nanos) = (u64::try_from(ts.tv_sec), u32::try_from(ts.tv_nsec));
-        Duration::new(secs.expect("non-negative"), nanos.expect("below one second"))
-    }
-}
-
-/// A fixed origin for wall-clock readings.
-static WALL_EPOCH: std::sync::LazyLock<std::time::Instant> =
-    std::sync::LazyLock::new(std::time::Instant::now);
-
-/// Criterion's own formatter for durations in nanoseconds.
-static DURATION_FORMAT: WallTime = WallTime;
-
-impl Measurement for BenchClock {
-    type Intermediate = Duration;
-    type Value = Duration;
-
-    fn start(&self) -> Duration {
-        self.now()
-    }
-    fn end(&self, start: Duration) -> Duration {
-        self.now().saturating_sub(start)
-    }
-    fn add(&self, a: &Duration, b: &Duration) -> Duration {
-        *a + *b
-    }
-    fn zero(&self) -> Duration {
-        Duration::ZERO
-    }
-    fn to_f64(&self, value: &Duration) -> f64 {
-        value.as_nanos() as f64
-    }
-    fn formatter(&self) -> &dyn ValueFormatter {
-        DURATION_FORMAT.formatter()
-    }
-}
 
 /// One comparison: which operation, at which precision, held to what.
 struct Spec {
@@ -118,7 +62,11 @@ impl Spec {
 }
 
 /// Maps `op` over `inputs` once per iteration.
-fn map_batch<I, O>(b: &mut criterion::Bencher<'_, BenchClock>, inputs: &[I], op: impl Fn(&I) -> O) {
+fn map_batch<I, O>(
+    b: &mut criterion::Bencher<'_, ThreadClock>,
+    inputs: &[I],
+    op: impl Fn(&I) -> O,
+) {
     b.iter(|| {
         for x in black_box(inputs) {
             black_box(op(x));
@@ -129,7 +77,7 @@ fn map_batch<I, O>(b: &mut criterion::Bencher<'_, BenchClock>, inputs: &[I], op:
 /// Benchmarks the GA side and the glam side of `spec` in one criterion group. Both closures
 /// are generic parameters, so each side is monomorphised and inlined alike.
 fn bench_pair<I, O, J, P>(
-    c: &mut Criterion<BenchClock>,
+    c: &mut Criterion<ThreadClock>,
     spec: &Spec,
     (ga_inputs, ga): (&[I], impl Fn(&I) -> O),
     (glam_inputs, glam): (&[J], impl Fn(&J) -> P),
@@ -143,7 +91,7 @@ fn bench_pair<I, O, J, P>(
 
 /// Benchmarks a GA operation that glam has no counterpart for.
 fn bench_ga<I, O>(
-    c: &mut Criterion<BenchClock>,
+    c: &mut Criterion<ThreadClock>,
     spec: &Spec,
     (inputs, ga): (&[I], impl Fn(&I) -> O),
 ) {
@@ -209,7 +157,7 @@ fn inputs() -> Inputs {
 }
 
 /// Registers every benchmark and returns what was measured, for the CSV.
-fn run_all(c: &mut Criterion<BenchClock>, x: &Inputs) -> Vec<Spec> {
+fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
     let within = Target::RatioToGlam(1.1);
     let mut specs = Vec::new();
     // Each macro call benchmarks one spec and records it for the CSV.
@@ -326,16 +274,9 @@ fn main() {
     let started = SystemTime::now();
     // On CPU time a benchmark takes longer in wall time when the machine is busy, so the full
     // run keeps criterion's sample count but shortens its default 3 s + 5 s per benchmark.
-    let (warm_up, measurement) =
-        if quick_mode() { bench_times() } else { (Duration::from_secs(1), Duration::from_secs(3)) };
-    let mut criterion = Criterion::default()
-        .with_measurement(BenchClock::from_env())
-        .warm_up_time(warm_up)
-        .measurement_time(measurement);
-    if quick_mode() {
-        criterion = criterion.sample_size(10).nresamples(1000);
-    }
-    let mut criterion = criterion.configure_from_args();
+    let full = (Duration::from_secs(1), Duration::from_secs(3));
+    let criterion = Criterion::default().with_measurement(ThreadClock::from_env());
+    let mut criterion = configured(criterion, full).configure_from_args();
     let specs = run_all(&mut criterion, &inputs());
     criterion.final_summary();
 

@@ -22,6 +22,7 @@ use criterion::{Criterion, Throughput};
 use exact_tracer::Exact;
 use intersect::{Intersector, Ray, Real, Triangle};
 use raytrace::{Backend, Job, Precision, dispatch};
+use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::{KernelRow, fill_kernel_ratios_to_la};
 use wedge_benches::{
     SplitMix64, bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
@@ -159,12 +160,7 @@ impl Job for BenchKernel<'_> {
 
 fn main() {
     let started = SystemTime::now();
-    let (warm_up, measurement) = bench_times();
-    let mut criterion = Criterion::default().warm_up_time(warm_up).measurement_time(measurement);
-    if quick_mode() {
-        criterion = criterion.sample_size(10).nresamples(1000);
-    }
-    let mut criterion = criterion.configure_from_args();
+    let mut criterion = configured(Criterion::default(), bench_times()).configure_from_args();
     let cases = cases();
     let mut measured = Vec::new();
     for precision in [Precision::F32, Precision::F64] {

@@ -28,12 +28,15 @@ use criterion::{Criterion, SamplingMode, Throughput};
 use intersect::{Intersector, Ray};
 use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
+use wedge_benches::clock::configured;
 use wedge_benches::throughput::plot::draw_throughput_svg;
 use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
 use wedge_benches::throughput::rows::{ThroughputRow, fill_ratios_to_la};
 use wedge_benches::throughput::scenes::{BenchScene, all_scenes};
 use wedge_benches::throughput::trace::{Traced, trace, trace_parallel};
-use wedge_benches::{cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv};
+use wedge_benches::{
+    bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
+};
 
 /// Scenes with at least this many triangles also get the 1920 x 1080 alpha frame.
 const LARGE_SCENE: usize = 1_000_000;
@@ -175,15 +178,7 @@ fn main() {
     let started = SystemTime::now();
     let quick = quick_mode();
     let sizes = if quick { &QUICK } else { &FULL };
-    let mut criterion = Criterion::default();
-    if quick {
-        criterion = criterion
-            .warm_up_time(Duration::from_millis(20))
-            .measurement_time(Duration::from_millis(20))
-            .sample_size(10)
-            .nresamples(1000);
-    }
-    let mut criterion = criterion.configure_from_args();
+    let mut criterion = configured(Criterion::default(), bench_times()).configure_from_args();
 
     let threads = available_parallelism().map_or(1, usize::from);
     let pool = (threads > 1).then(|| {

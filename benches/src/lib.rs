@@ -17,6 +17,7 @@
 #![deny(missing_docs)]
 
 pub mod accuracy;
+pub mod clock;
 pub mod throughput;
 
 use std::fs;
