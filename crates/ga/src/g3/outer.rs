@@ -110,18 +110,9 @@ impl<T: Scalar> BitXor<Vector<T>> for Rotor<T> {
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
         // Blade products: s ∧ e1 = e1, s ∧ e2 = e2, s ∧ e3 = e3, e12 ∧ e3 = e123, e23 ∧ e1 = e123,
-        //   e31 ∧ e2 = e123
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            a.s * b.e1,
-            a.s * b.e2,
-            a.s * b.e3,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        )
+        //   e31 ∧ e2 = e123: each equals the product in the other order (a vector's outer
+        //   product with a scalar or a bivector commutes), so this is `Vector ^ Rotor`.
+        b ^ self
     }
 }
 
