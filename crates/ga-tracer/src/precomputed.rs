@@ -63,11 +63,26 @@
 //! # Cost per test
 //!
 //! Counting a fused multiply-add as one operation: `s`, 3 subtractions; `den` and `num`, two
-//! inner products of 3 each; the distance test, 2 multiplies (`t_max |den|`, the slack below)
-//! and 2 comparisons; `q`, 3 multiplies and 3 multiply-adds; `U` and `V`, two inner products;
-//! the edge test, 1 addition and 3 comparisons. The sign flips `σx` are bit operations.
-//! 24 arithmetic operations in all, 11 before the distance test (Moller-Trumbore: 27
-//! operations and a reciprocal). One division, only for a hit.
+//! inner products of 3 each; `q`, 3 multiplies and 3 multiply-adds; `U` and `V`, two inner
+//! products; the edge test, 2 additions, 2 minima and 1 comparison; the distance test, 2
+//! multiplies (`t_max |den|`, the slack below) and 2 comparisons. The sign flips `σx` are bit
+//! operations. 25 arithmetic operations in all (Moller-Trumbore: 27 and a reciprocal). One
+//! division, only for a hit.
+//!
+//! # One predictable branch: the edges first
+//!
+//! Both tests are needed for a hit, so their order does not change any result, only the
+//! time. The distance test alone is cheaper (11 operations), but a ray from inside a mesh
+//! finds about half of the planes of the triangles it is tested against in front of it: a
+//! coin toss for the branch predictor. A mispredicted branch throws away the work the
+//! processor has started beyond it, including the loads of the next BVH node and triangles,
+//! so the memory latencies that would have overlapped are paid one after the other. The
+//! edge test fails for nearly every triangle tested (about 11% of the tests on the bunny's
+//! incoherent rays are hits), so it is decided first, with the three comparisons folded into
+//! one (`min(σU, σV, |den| - σ(U + V)) >= 0`, the minima being branch-free instructions), and
+//! the distance test runs only for rays inside the edges. On the bunny's 1M incoherent rays
+//! (f32, one thread) the distance-first order ran at 3.9 Mrays/s against the watertight `la`
+//! kernel's 5.1; edges first, at 5.1 (medians of alternating runs; `results/README.md`).
 //!
 //! # Not watertight
 //!
@@ -220,11 +235,6 @@ fn candidate<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> Option<Candi
     // rejects a hit whose rounded t is exactly t_max (the final decision is made on the
     // divided t): then `intersect(.., t_max = hit.t)` finds the same hit.
     let abs_den = den.abs();
-    let num_s = num.xor_sign(den);
-    let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
-    if !(num_s > T::ZERO && num_s <= t_max * abs_den * slack) {
-        return None;
-    }
 
     // q = den (p - a) = num u - den s; U = q · m_b, V = q · m_c.
     let q = Vector::new(
@@ -234,8 +244,23 @@ fn candidate<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> Option<Candi
     );
     let u = dot(q, prim.m_b);
     let v = dot(q, prim.m_c);
+
+    // The edges: σU >= 0, σV >= 0 and σ(U + V) <= |den| as one branch (see the module
+    // documentation). `fl(|den| - x) >= 0` exactly when `|den| >= x`. `min` ignores a NaN
+    // argument, but `w` is NaN whenever `u`, `v` or `den` is, and the second test (a branch
+    // that is never taken on finite data) rejects it.
     let (u_s, v_s) = (u.xor_sign(den), v.xor_sign(den));
-    if !(u_s >= T::ZERO && v_s >= T::ZERO && u_s + v_s <= abs_den) {
+    let w = abs_den - (u_s + v_s);
+    if u_s.min(v_s).min(w) < T::ZERO || w.is_nan() {
+        return None;
+    }
+
+    // 0 < t <= t_max as 0 < σ num <= t_max |den|, loosened by a few ulps so that it never
+    // rejects a hit whose rounded t is exactly t_max (the final decision is made on the
+    // divided t): then `intersect(.., t_max = hit.t)` finds the same hit.
+    let num_s = num.xor_sign(den);
+    let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
+    if !(num_s > T::ZERO && num_s <= t_max * abs_den * slack) {
         return None;
     }
     Some(Candidate { num, den, u, v })
@@ -291,6 +316,24 @@ mod tests {
             // Right-handed with the vertex order: n points to where (b - a) x (c - a) does.
             assert!((prim.n | e1.cross(e2)) > 0.0);
         }
+    }
+
+    /// `min` ignores a NaN argument, so the one-branch edge test must reject NaN itself: here
+    /// `U` is NaN while `V` and the distance are fine.
+    #[test]
+    fn a_nan_edge_value_is_a_miss() {
+        let prim = GaPrim::<f32> {
+            a: Vector::ZERO,
+            n: Vector::new(0.0, 0.0, 1.0),
+            m_b: Vector::new(f32::NAN, 0.0, 0.0),
+            m_c: Vector::new(0.0, 1.0, 0.0),
+        };
+        let ray = Ray::new([0.1, 0.1, 1.0], [0.0, 0.0, -1.0]);
+        assert!(intersect(&prim, &ray, f32::INFINITY).is_none());
+        assert!(!occludes(&prim, &ray, f32::INFINITY));
+        // The same with a finite frame is a hit: the NaN alone decides.
+        let prim = GaPrim { m_b: Vector::new(1.0, 0.0, 0.0), ..prim };
+        assert!(intersect(&prim, &ray, f32::INFINITY).is_some());
     }
 
     #[test]
