@@ -1,0 +1,220 @@
+//! Back ends timed in alternating processes: the bunny's primary and incoherent rays, one
+//! thread, every back end and precision, each measured in a fresh process per round, with the
+//! order of the back ends rotated from round to round. Writes `results/interleaved.csv`.
+//!
+//! **Why.** On the machine of `results/` the time of the same binary on the same rays moves by
+//! up to ±10% between processes (seen: 4.9 to 6.0 Mrays/s for `la` f32 incoherent rays in ten
+//! runs), and by ±20-30% between runs of the throughput bench (`la-mt` f32 incoherent went
+//! from 1.60x to 1.19x `la`'s time with no change to either kernel). Within one process the
+//! figure is steady, so the spread comes with the process: where the BVH and the triangles
+//! land in memory, and what else the host is doing at the time. One process per
+//! measurement, alternated, and the median over rounds make the comparison of back ends fair
+//! to each of them. The throughput bench remains the table of every scene and thread count.
+//!
+//! Each child process loads the bunny, builds one back end's BVH, traces each ray set three
+//! times and prints the best Mrays/s of the three (the first trace warms the caches). The
+//! parent runs `ROUNDS` rounds and writes, per back end, precision and ray set, the median,
+//! minimum and maximum over the rounds, and the ratio of `la`'s median Mrays/s to the back
+//! end's (time relative to `la`, as in `throughput.csv`).
+//!
+//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 5 minutes). With
+//! `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
+//! the criterion directory (a smoke test).
+
+use std::hint::black_box;
+use std::process::{Command, ExitCode};
+use std::time::Instant;
+
+use clap::ValueEnum;
+use intersect::{Intersector, Ray};
+use raytrace::{Backend, Job, Precision, dispatch};
+use render::accel::Accel;
+use render::scene::Mesh;
+use serde::Serialize;
+use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
+use wedge_benches::throughput::scenes::bunny;
+use wedge_benches::throughput::trace::trace;
+use wedge_benches::{cpu_model, criterion_dir, quick_mode, results_dir, write_csv};
+
+/// Rounds of a full run; each round runs every back end and precision once.
+const ROUNDS: usize = 9;
+/// Traces of each ray set per process; the best one counts.
+const REPEATS: usize = 3;
+/// The ray sets compared.
+const SETS: [RaySet; 2] = [RaySet::PrimaryClosest, RaySet::IncoherentClosest];
+/// Set in a child process: `backend:precision` to measure.
+const CHILD: &str = "WEDGE_INTERLEAVED_CHILD";
+
+/// One row of `interleaved.csv`.
+#[derive(Serialize)]
+struct Row {
+    backend: String,
+    precision: String,
+    scene: &'static str,
+    ray_set: &'static str,
+    rounds: usize,
+    median_mrays_per_s: f64,
+    min_mrays_per_s: f64,
+    max_mrays_per_s: f64,
+    /// `la`'s median Mrays/s over this back end's (time relative to `la`).
+    ratio_to_la: f64,
+    cpu: String,
+}
+
+/// The rays of the comparison, in `f64`.
+fn ray_sets(mesh: &Mesh, quick: bool) -> Vec<(RaySet, Vec<Ray<f64>>)> {
+    let (side, incoherent) = if quick { (64, 4096) } else { (1024, 1_000_000) };
+    SETS.iter()
+        .map(|&set| {
+            let rays = if set.is_primary() {
+                primary_rays(mesh, side, side)
+            } else {
+                incoherent_rays(mesh, incoherent, INCOHERENT_SEED)
+            };
+            (set, rays)
+        })
+        .collect()
+}
+
+/// A child's work: best Mrays/s of each ray set with one back end.
+struct Measure<'a> {
+    mesh: &'a Mesh,
+    sets: &'a [(RaySet, Vec<Ray<f64>>)],
+}
+
+impl Job for Measure<'_> {
+    type Output = Vec<f64>;
+
+    fn run<I: Intersector + 'static>(self, intersector: I) -> Vec<f64> {
+        let accel = Accel::from_mesh(intersector, self.mesh);
+        self.sets
+            .iter()
+            .map(|(set, rays64)| {
+                let rays: Vec<Ray<I::Real>> = rays64.iter().map(Ray::cast).collect();
+                (0..REPEATS)
+                    .map(|_| {
+                        let start = Instant::now();
+                        black_box(trace(&accel, black_box(&rays), set.query()));
+                        rays.len() as f64 / start.elapsed().as_secs_f64() / 1e6
+                    })
+                    .fold(0.0, f64::max)
+            })
+            .collect()
+    }
+}
+
+/// Child mode: measures `spec` (`backend:precision`) and prints one figure per ray set.
+fn child(spec: &str) -> Result<(), String> {
+    let (backend, precision) = spec.split_once(':').ok_or("expected backend:precision")?;
+    let backend = Backend::from_str(backend, false)?;
+    let precision = Precision::from_str(precision, false)?;
+    let mesh = bunny();
+    let sets = ray_sets(&mesh, quick_mode());
+    let figures = dispatch(backend, precision, Measure { mesh: &mesh, sets: &sets });
+    println!("{}", figures.iter().map(f64::to_string).collect::<Vec<_>>().join(" "));
+    Ok(())
+}
+
+/// Runs one child and parses its figures.
+fn run_child(spec: &str) -> Result<Vec<f64>, String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let out = Command::new(exe).env(CHILD, spec).output().map_err(|e| e.to_string())?;
+    if !out.status.success() {
+        return Err(format!("{spec}: {}", String::from_utf8_lossy(&out.stderr).trim()));
+    }
+    String::from_utf8_lossy(&out.stdout)
+        .split_whitespace()
+        .map(|s| s.parse().map_err(|e| format!("{spec}: {e}")))
+        .collect()
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn parent() -> Result<(), String> {
+    let quick = quick_mode();
+    let rounds = if quick { 1 } else { ROUNDS };
+    let specs: Vec<(Backend, Precision)> = Precision::value_variants()
+        .iter()
+        .flat_map(|&p| Backend::value_variants().iter().map(move |&b| (b, p)))
+        .collect();
+    let spec_names: Vec<(String, String)> = specs
+        .iter()
+        .map(|(b, p)| {
+            let b = b.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
+            (b, p.name().to_owned())
+        })
+        .collect();
+    // figures[spec][set] over the rounds.
+    let mut figures = vec![vec![Vec::new(); SETS.len()]; specs.len()];
+    for round in 0..rounds {
+        for k in 0..specs.len() {
+            let i = (k + round) % specs.len();
+            let (b, p) = &spec_names[i];
+            let got = run_child(&format!("{b}:{p}"))?;
+            eprintln!("round {round} {b} {p}: {got:?}");
+            for (set, x) in got.into_iter().enumerate() {
+                figures[i][set].push(x);
+            }
+        }
+    }
+    let cpu = cpu_model();
+    let medians: Vec<Vec<f64>> =
+        figures.iter_mut().map(|sets| sets.iter_mut().map(|v| median(v)).collect()).collect();
+    let mut rows = Vec::new();
+    for (i, (b, p)) in spec_names.iter().enumerate() {
+        let la = spec_names.iter().position(|(lb, lp)| lb == "la" && lp == p).unwrap_or(i);
+        for (s, set) in SETS.iter().enumerate() {
+            let v = &figures[i][s];
+            rows.push(Row {
+                backend: b.clone(),
+                precision: p.clone(),
+                scene: "bunny",
+                ray_set: set.name(),
+                rounds,
+                median_mrays_per_s: medians[i][s],
+                min_mrays_per_s: v[0],
+                max_mrays_per_s: v[v.len() - 1],
+                ratio_to_la: medians[la][s] / medians[i][s],
+                cpu: cpu.clone(),
+            });
+        }
+    }
+    println!(
+        "{:<11} {:<4} {:<19} {:>7} {:>7} {:>7} {:>6}",
+        "back end", "prec", "rays", "median", "min", "max", "ratio"
+    );
+    for r in &rows {
+        println!(
+            "{:<11} {:<4} {:<19} {:>7.2} {:>7.2} {:>7.2} {:>6.3}",
+            r.backend,
+            r.precision,
+            r.ray_set,
+            r.median_mrays_per_s,
+            r.min_mrays_per_s,
+            r.max_mrays_per_s,
+            r.ratio_to_la
+        );
+    }
+    let dir = if quick { criterion_dir() } else { results_dir() };
+    let path = dir.join("interleaved.csv");
+    write_csv(&path, &rows).map_err(|e| format!("{}: {e}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let result = match std::env::var(CHILD) {
+        Ok(spec) => child(&spec),
+        Err(_) => parent(),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
