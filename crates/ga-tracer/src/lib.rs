@@ -48,7 +48,7 @@
 //! | NaN or infinite input | miss, no panic | miss, no panic | miss, no panic |
 //! | Per triangle | 3 vertices: 36 B (`f32`), 72 B (`f64`) | `a`, unit normal `n`, reciprocal frame `m_b`, `m_c`: 48 B, 96 B | 3 vertices and the unit normal: 48 B, 96 B |
 //! | Per ray | nothing | nothing | an orthonormal basis of the plane orthogonal to the ray (a square root, 2 divisions) |
-//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector: 24 operations (a fused multiply-add counted once); one division, for hits only | 3 translated vertices, their coordinates in the plane orthogonal to the ray, 3 edge values of 3 operations: about 45 operations; one division, for hits only |
+//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector, then one branch on the edges (rarely passed, so well predicted) before the distance test: 25 operations (a fused multiply-add counted once); one division, for hits only | 3 translated vertices, their coordinates in the plane orthogonal to the ray, 3 edge values of 3 operations: about 45 operations; one division, for hits only |
 //! | Rare slow path | none | none | exact signs (`orient2d`) when an edge value is exactly 0 |
 //! | `t` measured from | the world origin (loses about 3 digits at `1e3` scene sizes from it) | vertex `a` (one rounded subtraction `a - o`) | vertex `a`, as [`Ga`] |
 //!

@@ -81,8 +81,11 @@
 //! incoherent rays are hits), so it is decided first, with the three comparisons folded into
 //! one (`min(σU, σV, |den| - σ(U + V)) >= 0`, the minima being branch-free instructions), and
 //! the distance test runs only for rays inside the edges. On the bunny's 1M incoherent rays
-//! (f32, one thread) the distance-first order ran at 3.9 Mrays/s against the watertight `la`
-//! kernel's 5.1; edges first, at 5.1 (medians of alternating runs; `results/README.md`).
+//! (f32, one thread) the distance-first order ran at 4.0 Mrays/s against the watertight `la`
+//! kernel's 5.5; edges first, at 5.1 (medians of alternating runs; `results/README.md`).
+//! Combining the comparisons with `&` instead of a minimum does not give one branch: the
+//! compiler splits a branch on an AND of comparisons into a chain of branches, the first of
+//! them the same coin toss.
 //!
 //! # Not watertight
 //!
