@@ -3,8 +3,11 @@
 //! Each benchmark maps one operation over a fixed array of `BATCH` random inputs (fixed seed),
 //! reached through `black_box` so that neither side can be constant-folded, and passes every
 //! result through `black_box` so that none is discarded. Both sides pay the same loop and
-//! store overhead; the figure is criterion's mean time per iteration divided by `BATCH`, i.e.
-//! throughput per operation, not latency. `BATCH` inputs fit in L1 for every type.
+//! store overhead; the figure is the median of criterion's samples (time per iteration)
+//! divided by `BATCH`, i.e. throughput per operation, not latency. `BATCH` inputs fit in L1 for
+//! every type. The median rather than the mean: on a shared machine a few samples come out
+//! slow (an interrupt, a descheduling), and at a fraction of a nanosecond per operation they
+//! moved the mean by more than the 10% these figures are held to.
 //!
 //! **Clock.** Time is the benchmark thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), not wall
 //! time: the machine these figures come from is shared (two cores, other jobs compiling), and
@@ -12,11 +15,21 @@
 //! meaningful under load. Set `WEDGE_BENCH_WALL=1` to measure wall time instead (criterion's
 //! default) on a quiet machine. Both sides of a comparison always use the same clock.
 //!
+//! **The ratio: paired.** Criterion times the GA side for a few seconds, then the glam side.
+//! On the machine of `results/` the speed of the host drifts over seconds, and two full runs
+//! of the same binary gave ratios of 1.23 and 0.62 for `Rotor::reverse` against
+//! `Quat::inverse`, which compile to the same three instructions. So the ratio in the CSV comes
+//! from a paired measurement: 101 rounds, each timing a burst of 200 batches of the GA side and
+//! one of the glam side back to back (which goes first alternates), and the median of the
+//! rounds' ratios. Both sides of a round see the machine in the same state; the same two
+//! instruction sequences then measured 1.000 and 0.995 in two runs.
+//!
 //! After the groups have run, `main` reads criterion's estimates
-//! (`<criterion dir>/<group>/{ga,glam}/new/estimates.json`, the mean's point estimate; see
-//! `wedge_benches::mean_ns`) and writes `results/ga_ops.csv`, one row per operation and
-//! precision, with the target each GA operation is held to: within 1.1x of glam, or under 3 ns
-//! for the full geometric product of two `Multivector<f64>` (glam has no counterpart).
+//! (`<criterion dir>/<group>/{ga,glam}/new/estimates.json`, the median's point estimate; see
+//! `wedge_benches::median_ns`) and writes `results/ga_ops.csv`, one row per operation and
+//! precision: criterion's times, the paired ratio, and the target each GA operation is held
+//! to: a paired ratio of at most 1.1, or a criterion median under 3 ns for the full geometric
+//! product of two `Multivector<f64>` (glam has no counterpart).
 //!
 //! Run: `cargo bench -p wedge-benches --bench ga_ops`. With `WEDGE_BENCH_QUICK=1` every
 //! benchmark runs for a few milliseconds and the CSV goes to the criterion directory instead
@@ -39,8 +52,8 @@ use ga::g3::{Multivector, Rotor, Vector};
 use glam::{DQuat, DVec3, Quat, Vec3};
 use wedge_benches::clock::{ThreadClock, configured};
 use wedge_benches::{
-    GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir,
-    write_csv,
+    GaOpsFigures, GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, median_ns, quick_mode,
+    results_dir, write_csv,
 };
 
 /// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
@@ -53,12 +66,54 @@ struct Spec {
     precision: &'static str,
     has_glam: bool,
     target: Target,
+    /// The paired measurement's ratio (none without a glam counterpart).
+    paired_ratio: Option<f64>,
 }
 
 impl Spec {
     fn group(&self) -> String {
         format!("{}_{}", self.op, self.precision)
     }
+}
+
+/// Rounds of the paired measurement, and batches per burst: full run, quick run.
+const PAIRED: [(usize, u32); 2] = [(101, 200), (3, 2)];
+
+/// `op`, with its argument type fixed by `inputs` (a closure's parameter type is inferred only
+/// where the closure is used, and each is used twice).
+fn typed<I, O>(_inputs: &[I], op: impl Fn(&I) -> O) -> impl Fn(&I) -> O {
+    op
+}
+
+/// Nanoseconds per operation of one burst: `op` mapped over `inputs`, `batches` times.
+fn burst<I, O>(clock: &ThreadClock, inputs: &[I], op: &impl Fn(&I) -> O, batches: u32) -> f64 {
+    let start = clock.now();
+    for _ in 0..batches {
+        for x in black_box(inputs) {
+            black_box(op(x));
+        }
+    }
+    let ns = clock.now().saturating_sub(start).as_secs_f64() * 1e9;
+    ns / f64::from(batches) / BATCH as f64
+}
+
+/// The median over rounds of `ga`'s time over `glam`'s, the two timed back to back in each
+/// round (which goes first alternates), so that both sides of a ratio see the machine in the
+/// same state.
+fn paired_ratio(mut ga: impl FnMut() -> f64, mut glam: impl FnMut() -> f64) -> f64 {
+    let rounds = PAIRED[usize::from(quick_mode())].0;
+    let mut ratios: Vec<f64> = (0..rounds)
+        .map(|round| {
+            if round % 2 == 1 {
+                let glam_ns = glam();
+                ga() / glam_ns
+            } else {
+                ga() / glam()
+            }
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    ratios[ratios.len() / 2]
 }
 
 /// Maps `op` over `inputs` once per iteration.
@@ -160,17 +215,37 @@ fn inputs() -> Inputs {
 fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
     let within = Target::RatioToGlam(1.1);
     let mut specs = Vec::new();
-    // Each macro call benchmarks one spec and records it for the CSV.
+    let clock = ThreadClock::from_env();
+    let batches = PAIRED[usize::from(quick_mode())].1;
+    // Each macro call benchmarks one spec (criterion, then the paired measurement) and records
+    // it for the CSV.
     macro_rules! pair {
         ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr, $glam_inputs:expr, $glam:expr) => {{
-            let spec = Spec { op: $op, precision: $precision, has_glam: true, target: $target };
-            bench_pair(c, &spec, ($ga_inputs, $ga), ($glam_inputs, $glam));
+            let (ga, glam) = (typed($ga_inputs, $ga), typed($glam_inputs, $glam));
+            let ratio = paired_ratio(
+                || burst(&clock, $ga_inputs, &ga, batches),
+                || burst(&clock, $glam_inputs, &glam, batches),
+            );
+            let spec = Spec {
+                op: $op,
+                precision: $precision,
+                has_glam: true,
+                target: $target,
+                paired_ratio: Some(ratio),
+            };
+            bench_pair(c, &spec, ($ga_inputs, ga), ($glam_inputs, glam));
             specs.push(spec);
         }};
     }
     macro_rules! single {
         ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr) => {{
-            let spec = Spec { op: $op, precision: $precision, has_glam: false, target: $target };
+            let spec = Spec {
+                op: $op,
+                precision: $precision,
+                has_glam: false,
+                target: $target,
+                paired_ratio: None,
+            };
             bench_ga(c, &spec, ($ga_inputs, $ga));
             specs.push(spec);
         }};
@@ -258,6 +333,33 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
         &x.dquats,
         |&(q, _, _)| q.inverse()
     );
+    // A rotor's inverse for any non-zero rotor, beside what a glam user writes for a quaternion
+    // that may not be unit (glam has no such method): the conjugate divided by the squared
+    // norm, with the same check.
+    pair!(
+        "rotor_inverse_vs_quat_conjugate_over_norm2",
+        "f32",
+        within,
+        &x.rotors32,
+        |&(r, _, _)| r.inverse(),
+        &x.quats,
+        |&(q, _, _)| {
+            let n2 = q.length_squared();
+            (n2 > 0.0 && n2 < f32::INFINITY).then(|| q.conjugate() / n2)
+        }
+    );
+    pair!(
+        "rotor_inverse_vs_quat_conjugate_over_norm2",
+        "f64",
+        within,
+        &x.rotors64,
+        |&(r, _, _)| r.inverse(),
+        &x.dquats,
+        |&(q, _, _)| {
+            let n2 = q.length_squared();
+            (n2 > 0.0 && n2 < f64::INFINITY).then(|| q.conjugate() / n2)
+        }
+    );
     single!("multivector_geometric_product", "f32", Target::None, &x.multivectors32, |&(a, b)| a
         * b);
     single!("multivector_geometric_product", "f64", Target::MaxNs(3.0), &x.multivectors64, |&(
@@ -283,7 +385,7 @@ fn main() {
     let dir = criterion_dir();
     let cpu = cpu_model();
     let per_op = |group: &str, function: &str| {
-        mean_ns(&dir, group, function, started).map(|ns| ns / BATCH as f64)
+        median_ns(&dir, group, function, started).map(|ns| ns / BATCH as f64)
     };
     let rows: Vec<GaOpsRow> = specs
         .iter()
@@ -292,7 +394,9 @@ fn main() {
             // A benchmark filtered out of this run has no fresh estimate: no row for it.
             let ga = per_op(&group, "ga")?;
             let glam = if spec.has_glam { per_op(&group, "glam") } else { None };
-            Some(GaOpsRow::new(spec.op, spec.precision, Some(ga), glam, spec.target, &cpu))
+            let figures =
+                GaOpsFigures { ga_ns: Some(ga), glam_ns: glam, paired_ratio: spec.paired_ratio };
+            Some(GaOpsRow::new(spec.op, spec.precision, figures, spec.target, &cpu))
         })
         .collect();
     if rows.is_empty() {
@@ -308,11 +412,11 @@ fn main() {
         results_dir().join("ga_ops.csv")
     };
     write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
-    println!("\n{:<32} {:>5} {:>9} {:>9} {:>7}  target", "op", "prec", "ga ns", "glam ns", "ratio");
+    println!("\n{:<44} {:>5} {:>9} {:>9} {:>7}  target", "op", "prec", "ga ns", "glam ns", "ratio");
     for row in &rows {
         let show = |x: Option<f64>| x.map_or_else(|| "-".to_owned(), |x| format!("{x:.3}"));
         println!(
-            "{:<32} {:>5} {:>9} {:>9} {:>7}  {} {}",
+            "{:<44} {:>5} {:>9} {:>9} {:>7}  {} {}",
             row.op,
             row.precision,
             show(row.ga_ns),

@@ -28,7 +28,9 @@ impl ThreadClock {
         Self { wall: wall.then(Instant::now) }
     }
 
-    fn now(&self) -> Duration {
+    /// The clock's reading: the thread's CPU time, or wall time since the clock was made.
+    #[must_use]
+    pub fn now(&self) -> Duration {
         if let Some(epoch) = self.wall {
             return epoch.elapsed();
         }

@@ -2,15 +2,16 @@
 //! the CSV rows the benches write.
 //!
 //! The benches measure with criterion and then turn its estimates into `results/*.csv`: after
-//! the groups have run, [`mean_ns`] reads `<criterion dir>/<group>/<function>/new/estimates.json`
-//! (the mean's point estimate) for each measurement and the bench writes one CSV row per
-//! comparison. Reading criterion's own files keeps one source of truth for every figure.
+//! the groups have run, [`mean_ns`] (or [`median_ns`]) reads
+//! `<criterion dir>/<group>/<function>/new/estimates.json` (the mean's or the median's point
+//! estimate) for each measurement and the bench writes one CSV row per comparison. Reading criterion's own files keeps one source of truth for every figure.
 //!
 //! ```
-//! use wedge_benches::{GaOpsRow, Target};
+//! use wedge_benches::{GaOpsFigures, GaOpsRow, Target};
 //!
-//! let row = GaOpsRow::new("rotor_rotate", "f32", Some(2.2), Some(2.0), Target::RatioToGlam(1.1), "cpu");
-//! assert_eq!(row.ratio_ga_over_glam, Some(1.1));
+//! let figures = GaOpsFigures { ga_ns: Some(2.2), glam_ns: Some(2.0), paired_ratio: Some(1.08) };
+//! let row = GaOpsRow::new("rotor_rotate", "f32", figures, Target::RatioToGlam(1.1), "cpu");
+//! assert_eq!(row.ratio_ga_over_glam, Some(1.08));
 //! assert_eq!(row.meets_target, Some(true));
 //! ```
 
@@ -91,6 +92,30 @@ pub fn mean_ns(
     function: &str,
     since: SystemTime,
 ) -> Option<f64> {
+    estimate_ns(criterion_dir, group, function, since, "mean")
+}
+
+/// As [`mean_ns`], the median of the samples' times per iteration: unmoved by a few samples
+/// that an interrupt or a descheduling made slow.
+#[must_use]
+pub fn median_ns(
+    criterion_dir: &Path,
+    group: &str,
+    function: &str,
+    since: SystemTime,
+) -> Option<f64> {
+    estimate_ns(criterion_dir, group, function, since, "median")
+}
+
+/// The point estimate of `statistic` in criterion's `estimates.json` for `group/function`, if
+/// written at or after `since`.
+fn estimate_ns(
+    criterion_dir: &Path,
+    group: &str,
+    function: &str,
+    since: SystemTime,
+    statistic: &str,
+) -> Option<f64> {
     let path = criterion_dir.join(group).join(function).join("new").join("estimates.json");
     let fresh = fs::metadata(&path).and_then(|m| m.modified()).is_ok_and(|t| t >= since);
     if !fresh {
@@ -98,7 +123,7 @@ pub fn mean_ns(
     }
     let text = fs::read_to_string(&path).ok()?;
     let estimates: serde_json::Value = serde_json::from_str(&text).ok()?;
-    estimates.get("mean")?.get("point_estimate")?.as_f64()
+    estimates.get(statistic)?.get("point_estimate")?.as_f64()
 }
 
 /// The CPU model string from `/proc/cpuinfo`, or `"unknown"`.
@@ -126,6 +151,18 @@ pub enum Target {
     None,
 }
 
+/// What was measured of one GA operation (see the `ga_ops` bench).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GaOpsFigures {
+    /// Median nanoseconds per operation with `ga` (criterion).
+    pub ga_ns: Option<f64>,
+    /// Median nanoseconds per operation with glam (criterion), where glam has the operation.
+    pub glam_ns: Option<f64>,
+    /// The median over rounds of `ga`'s time over glam's, the two timed back to back in each
+    /// round.
+    pub paired_ratio: Option<f64>,
+}
+
 /// One row of `results/ga_ops.csv`: a GA operation beside its glam counterpart.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct GaOpsRow {
@@ -133,13 +170,13 @@ pub struct GaOpsRow {
     pub op: String,
     /// `f32` or `f64`.
     pub precision: String,
-    /// Mean nanoseconds per operation with `ga`.
+    /// Median nanoseconds per operation with `ga` (criterion).
     pub ga_ns: Option<f64>,
-    /// Mean nanoseconds per operation with glam, where glam has the operation.
+    /// Median nanoseconds per operation with glam (criterion), where glam has the operation.
     pub glam_ns: Option<f64>,
-    /// `ga_ns / glam_ns`.
+    /// `ga`'s time over glam's: the median of the paired rounds' ratios.
     pub ratio_ga_over_glam: Option<f64>,
-    /// The target in words, e.g. `ratio<=1.1` or `ga_ns<3`.
+    /// The target in words, e.g. `ratio<=1.1` (on `ratio_ga_over_glam`) or `ga_ns<3`.
     pub target: String,
     /// Whether the target is met (empty when there is no target or no measurement).
     pub meets_target: Option<bool>,
@@ -148,27 +185,26 @@ pub struct GaOpsRow {
 }
 
 impl GaOpsRow {
-    /// A row from two measurements (either may be missing) and the target they are held to.
+    /// A row from the figures of one operation (any may be missing) and its target.
     #[must_use]
     pub fn new(
         op: &str,
         precision: &str,
-        ga_ns: Option<f64>,
-        glam_ns: Option<f64>,
+        figures: GaOpsFigures,
         target: Target,
         cpu: &str,
     ) -> Self {
-        let ratio = ga_ns.zip(glam_ns).map(|(ga, glam)| ga / glam);
+        let ratio = figures.paired_ratio;
         let (target_text, meets) = match target {
             Target::RatioToGlam(max) => (format!("ratio<={max}"), ratio.map(|r| r <= max)),
-            Target::MaxNs(max) => (format!("ga_ns<{max}"), ga_ns.map(|ns| ns < max)),
+            Target::MaxNs(max) => (format!("ga_ns<{max}"), figures.ga_ns.map(|ns| ns < max)),
             Target::None => (String::new(), None),
         };
         Self {
             op: op.to_owned(),
             precision: precision.to_owned(),
-            ga_ns,
-            glam_ns,
+            ga_ns: figures.ga_ns,
+            glam_ns: figures.glam_ns,
             ratio_ga_over_glam: ratio,
             target: target_text,
             meets_target: meets,
