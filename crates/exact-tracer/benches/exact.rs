@@ -3,7 +3,9 @@
 //! Moller-Trumbore loop as the yardstick.
 //!
 //! `cargo bench -p exact-tracer`; criterion reports time per batch and, with the throughput
-//! set to the batch size, tests per second (ns per test = 1e9 / that).
+//! set to the batch size, tests per second (ns per test = 1e9 / that). With
+//! `WEDGE_BENCH_QUICK=1` (as CI runs it, like the benches in `benches/`) each benchmark runs
+//! for a few milliseconds: a smoke test, not a measurement.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use exact_tracer::{Exact, ExactTriangle};
@@ -11,6 +13,7 @@ use intersect::{Intersector, Ray, Triangle};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use std::hint::black_box;
+use std::time::Duration;
 
 const BATCH: usize = 1024;
 
@@ -112,5 +115,22 @@ fn bench(c: &mut Criterion) {
     black_box(());
 }
 
-criterion_group!(benches, bench);
+/// Criterion's defaults, or a few milliseconds per benchmark with `WEDGE_BENCH_QUICK=1`.
+fn config() -> Criterion {
+    let quick = std::env::var("WEDGE_BENCH_QUICK").is_ok_and(|v| v == "1");
+    if quick {
+        Criterion::default()
+            .sample_size(10)
+            .warm_up_time(Duration::from_millis(10))
+            .measurement_time(Duration::from_millis(20))
+    } else {
+        Criterion::default()
+    }
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = bench
+}
 criterion_main!(benches);
