@@ -52,8 +52,8 @@ use ga::g3::{Multivector, Rotor, Vector};
 use glam::{DQuat, DVec3, Quat, Vec3};
 use wedge_benches::clock::{ThreadClock, configured};
 use wedge_benches::{
-    GaOpsFigures, GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, median_ns, quick_mode,
-    results_dir, write_csv,
+    GaOpsFigures, GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, median, median_ns,
+    quick_mode, results_dir, write_csv,
 };
 
 /// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
@@ -85,13 +85,19 @@ fn typed<I, O>(_inputs: &[I], op: impl Fn(&I) -> O) -> impl Fn(&I) -> O {
     op
 }
 
+/// `op` mapped over `inputs` once: one batch, the unit both measurements time.
+#[inline(always)]
+fn map_once<I, O>(inputs: &[I], op: &impl Fn(&I) -> O) {
+    for x in black_box(inputs) {
+        black_box(op(x));
+    }
+}
+
 /// Nanoseconds per operation of one burst: `op` mapped over `inputs`, `batches` times.
 fn burst<I, O>(clock: &ThreadClock, inputs: &[I], op: &impl Fn(&I) -> O, batches: u32) -> f64 {
     let start = clock.now();
     for _ in 0..batches {
-        for x in black_box(inputs) {
-            black_box(op(x));
-        }
+        map_once(inputs, op);
     }
     let ns = clock.now().saturating_sub(start).as_secs_f64() * 1e9;
     ns / f64::from(batches) / BATCH as f64
@@ -100,8 +106,7 @@ fn burst<I, O>(clock: &ThreadClock, inputs: &[I], op: &impl Fn(&I) -> O, batches
 /// The median over rounds of `ga`'s time over `glam`'s, the two timed back to back in each
 /// round (which goes first alternates), so that both sides of a ratio see the machine in the
 /// same state.
-fn paired_ratio(mut ga: impl FnMut() -> f64, mut glam: impl FnMut() -> f64) -> f64 {
-    let rounds = PAIRED[usize::from(quick_mode())].0;
+fn paired_ratio(rounds: usize, mut ga: impl FnMut() -> f64, mut glam: impl FnMut() -> f64) -> f64 {
     let mut ratios: Vec<f64> = (0..rounds)
         .map(|round| {
             if round % 2 == 1 {
@@ -112,8 +117,7 @@ fn paired_ratio(mut ga: impl FnMut() -> f64, mut glam: impl FnMut() -> f64) -> f
             }
         })
         .collect();
-    ratios.sort_by(f64::total_cmp);
-    ratios[ratios.len() / 2]
+    median(&mut ratios)
 }
 
 /// Maps `op` over `inputs` once per iteration.
@@ -122,11 +126,7 @@ fn map_batch<I, O>(
     inputs: &[I],
     op: impl Fn(&I) -> O,
 ) {
-    b.iter(|| {
-        for x in black_box(inputs) {
-            black_box(op(x));
-        }
-    });
+    b.iter(|| map_once(inputs, &op));
 }
 
 /// Benchmarks the GA side and the glam side of `spec` in one criterion group. Both closures
@@ -216,13 +216,14 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
     let within = Target::RatioToGlam(1.1);
     let mut specs = Vec::new();
     let clock = ThreadClock::from_env();
-    let batches = PAIRED[usize::from(quick_mode())].1;
+    let (rounds, batches) = PAIRED[usize::from(quick_mode())];
     // Each macro call benchmarks one spec (criterion, then the paired measurement) and records
     // it for the CSV.
     macro_rules! pair {
         ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr, $glam_inputs:expr, $glam:expr) => {{
             let (ga, glam) = (typed($ga_inputs, $ga), typed($glam_inputs, $glam));
             let ratio = paired_ratio(
+                rounds,
                 || burst(&clock, $ga_inputs, &ga, batches),
                 || burst(&clock, $glam_inputs, &glam, batches),
             );

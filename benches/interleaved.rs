@@ -34,7 +34,7 @@ use serde::Serialize;
 use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
 use wedge_benches::throughput::scenes::bunny;
 use wedge_benches::throughput::trace::trace;
-use wedge_benches::{cpu_model, criterion_dir, quick_mode, results_dir, write_csv};
+use wedge_benches::{cpu_model, criterion_dir, median, quick_mode, results_dir, write_csv};
 
 /// Rounds of a full run; each round runs every back end and precision once.
 const ROUNDS: usize = 9;
@@ -128,11 +128,6 @@ fn run_child(spec: &str) -> Result<Vec<f64>, String> {
         .collect()
 }
 
-fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 fn parent() -> Result<(), String> {
     let quick = quick_mode();
     let rounds = if quick { 1 } else { ROUNDS };
@@ -161,13 +156,14 @@ fn parent() -> Result<(), String> {
         }
     }
     let cpu = cpu_model();
+    // Each series sorted (by `median`): its minimum first and its maximum last.
     let medians: Vec<Vec<f64>> =
         figures.iter_mut().map(|sets| sets.iter_mut().map(|v| median(v)).collect()).collect();
     let mut rows = Vec::new();
     for (i, (b, p)) in spec_names.iter().enumerate() {
         let la = spec_names.iter().position(|(lb, lp)| lb == "la" && lp == p).unwrap_or(i);
         for (s, set) in SETS.iter().enumerate() {
-            let v = &figures[i][s];
+            let sorted = &figures[i][s];
             rows.push(Row {
                 backend: b.clone(),
                 precision: p.clone(),
@@ -175,8 +171,8 @@ fn parent() -> Result<(), String> {
                 ray_set: set.name(),
                 rounds,
                 median_mrays_per_s: medians[i][s],
-                min_mrays_per_s: v[0],
-                max_mrays_per_s: v[v.len() - 1],
+                min_mrays_per_s: sorted[0],
+                max_mrays_per_s: sorted[sorted.len() - 1],
                 ratio_to_la: medians[la][s] / medians[i][s],
                 cpu: cpu.clone(),
             });

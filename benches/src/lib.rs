@@ -126,6 +126,17 @@ fn estimate_ns(
     estimates.get(statistic)?.get("point_estimate")?.as_f64()
 }
 
+/// The median of `values` (the upper one of the two middle values for an even count),
+/// sorting them in place; NaN sorts last, as `f64::total_cmp` orders it.
+///
+/// # Panics
+///
+/// If `values` is empty.
+pub fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
 /// The CPU model string from `/proc/cpuinfo`, or `"unknown"`.
 #[must_use]
 pub fn cpu_model() -> String {

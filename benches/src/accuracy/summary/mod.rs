@@ -125,10 +125,10 @@ fn find<'a>(
     rows.iter().find(|r| r.backend == backend && r.precision == precision && r.ray_set == set)
 }
 
+/// The median of the finite values, if any.
 fn median(mut v: Vec<f64>) -> Option<f64> {
     v.retain(|x| x.is_finite());
-    v.sort_by(f64::total_cmp);
-    (!v.is_empty()).then(|| v[v.len() / 2])
+    (!v.is_empty()).then(|| crate::median(&mut v))
 }
 
 /// The summary's Markdown.
