@@ -233,10 +233,6 @@ fn candidate<T: Float>(prim: &GaPrim<T>, ray: &Ray<T>, t_max: T) -> Option<Candi
     let s = prim.a - o;
     let den = dot(dir, prim.n);
     let num = dot(s, prim.n);
-
-    // 0 < t <= t_max as 0 < σ num <= t_max |den|, loosened by a few ulps so that it never
-    // rejects a hit whose rounded t is exactly t_max (the final decision is made on the
-    // divided t): then `intersect(.., t_max = hit.t)` finds the same hit.
     let abs_den = den.abs();
 
     // q = den (p - a) = num u - den s; U = q · m_b, V = q · m_c.
