@@ -17,7 +17,7 @@
 //! minimum and maximum over the rounds, and the ratio of `la`'s median Mrays/s to the back
 //! end's (time relative to `la`, as in `throughput.csv`).
 //!
-//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 5 minutes). With
+//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 2 minutes). With
 //! `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
 //! the criterion directory (a smoke test).
 
