@@ -1,6 +1,7 @@
-//! Back ends timed in alternating processes: the bunny's primary and incoherent rays, one
-//! thread, every back end and precision, each measured in a fresh process per round, with the
-//! order of the back ends rotated from round to round. Writes `results/interleaved.csv`.
+//! Back ends timed in alternating processes: the bunny's primary rays (closest and any hit)
+//! and incoherent rays, one thread, every back end and precision, each measured in a fresh
+//! process per round, with the order of the back ends rotated from round to round, and
+//! Embree 4 beside them when it is installed. Writes `results/interleaved.csv`.
 //!
 //! **Why.** On the machine of `results/` the time of the same binary on the same rays moves by
 //! up to ±10% between processes (seen: 4.9 to 6.0 Mrays/s for `la` f32 incoherent rays in ten
@@ -17,11 +18,25 @@
 //! minimum and maximum over the rounds, and the ratio of `la`'s median Mrays/s to the back
 //! end's (time relative to `la`, as in `throughput.csv`).
 //!
-//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 2 minutes). With
+//! **Embree 4 as the reference.** When `python3 -c "import embreex"` works (`pip install
+//! embreex`; another interpreter with `WEDGE_PYTHON`), each round also runs
+//! `benches/embree/trace.py` in its own process, on the same triangles and the same rays
+//! rounded to `f32` (written to `embree-input/` under the criterion directory): Embree 4, one
+//! `rtcIntersect1`/`rtcOccluded1` call per ray, one thread. It gives two rows: `embree4`, as
+//! measured, and `embree4-net`, with the binding's own cost per ray taken off (the Cython loop
+//! and the call, timed on an empty scene with the same rays: 10 to 13 ns on the machine of
+//! `results/`), a bound in Embree's favour. The targets were measured on another
+//! machine; these rows are the same-machine comparison. The project does not depend on
+//! Embree: without `embreex` the rows are left out, with a note.
+//!
+//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 3 minutes). With
 //! `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
 //! the criterion directory (a smoke test).
 
+use std::fs::File;
 use std::hint::black_box;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 use std::time::Instant;
 
@@ -31,7 +46,9 @@ use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
 use render::scene::Mesh;
 use serde::Serialize;
-use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
+use wedge_benches::throughput::rays::{
+    INCOHERENT_SEED, Query, RaySet, incoherent_rays, primary_rays,
+};
 use wedge_benches::throughput::scenes::bunny;
 use wedge_benches::throughput::trace::trace;
 use wedge_benches::{cpu_model, criterion_dir, median, quick_mode, results_dir, write_csv};
@@ -40,10 +57,16 @@ use wedge_benches::{cpu_model, criterion_dir, median, quick_mode, results_dir, w
 const ROUNDS: usize = 9;
 /// Traces of each ray set per process; the best one counts.
 const REPEATS: usize = 3;
-/// The ray sets compared.
-const SETS: [RaySet; 2] = [RaySet::PrimaryClosest, RaySet::IncoherentClosest];
+/// The ray sets compared: the three columns of the table.
+const SETS: [RaySet; 3] = RaySet::ALL;
 /// Set in a child process: `backend:precision` to measure.
 const CHILD: &str = "WEDGE_INTERLEAVED_CHILD";
+/// The back end name of the Embree reference, and of its row with the binding's cost removed.
+const EMBREE: &str = "embree4";
+/// See [`EMBREE`].
+const EMBREE_NET: &str = "embree4-net";
+/// The script that traces the rays with Embree.
+const EMBREE_SCRIPT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/embree/trace.py");
 
 /// One row of `interleaved.csv`.
 #[derive(Serialize)]
@@ -115,10 +138,63 @@ fn child(spec: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Runs one child and parses its figures.
-fn run_child(spec: &str) -> Result<Vec<f64>, String> {
-    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
-    let out = Command::new(exe).env(CHILD, spec).output().map_err(|e| e.to_string())?;
+/// The Python interpreter for the Embree reference.
+fn python() -> String {
+    std::env::var("WEDGE_PYTHON").unwrap_or_else(|_| "python3".to_owned())
+}
+
+/// Whether the Embree reference can run: `embreex` imports.
+fn embree_available() -> bool {
+    Command::new(python())
+        .args(["-c", "import embreex"])
+        .output()
+        .is_ok_and(|out| out.status.success())
+}
+
+/// Writes the bunny and the ray sets for the Embree script: `bunny.tri` (each triangle's
+/// vertices) and `<set>.ray` (origin and direction per ray), little-endian `f32`, the rays
+/// rounded from `f64` once, as the `f32` back ends round them. Returns the script's arguments.
+fn export_for_embree(
+    mesh: &Mesh,
+    sets: &[(RaySet, Vec<Ray<f64>>)],
+    dir: &Path,
+) -> std::io::Result<Vec<String>> {
+    fn write(path: &Path, values: impl Iterator<Item = f32>) -> std::io::Result<()> {
+        let mut out = BufWriter::new(File::create(path)?);
+        for x in values {
+            out.write_all(&x.to_le_bytes())?;
+        }
+        out.flush()
+    }
+    std::fs::create_dir_all(dir)?;
+    let triangles = mesh.triangles::<f32>();
+    write(
+        &dir.join("bunny.tri"),
+        triangles.iter().flat_map(|t| t.vertices().into_iter().flatten()),
+    )?;
+    let mut args = vec![dir.display().to_string()];
+    for (set, rays) in sets {
+        let values = rays.iter().flat_map(|r| r.origin.into_iter().chain(r.dir));
+        write(&dir.join(format!("{}.ray", set.name())), values.map(|x| x as f32))?;
+        let query = match set.query() {
+            Query::Closest => "closest",
+            Query::Any => "any",
+        };
+        args.push(format!("{}:{query}", set.name()));
+    }
+    Ok(args)
+}
+
+/// Runs one child (a back end of ours, or with `embree` the Embree script with those
+/// arguments) and parses its figures.
+fn run_child(spec: &str, embree: &[String]) -> Result<Vec<f64>, String> {
+    let out = if spec.starts_with(EMBREE) {
+        Command::new(python()).arg(EMBREE_SCRIPT).args(embree).output()
+    } else {
+        let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+        Command::new(exe).env(CHILD, spec).output()
+    }
+    .map_err(|e| e.to_string())?;
     if !out.status.success() {
         return Err(format!("{spec}: {}", String::from_utf8_lossy(&out.stderr).trim()));
     }
@@ -135,23 +211,46 @@ fn parent() -> Result<(), String> {
         .iter()
         .flat_map(|&p| Backend::value_variants().iter().map(move |&b| (b, p)))
         .collect();
-    let spec_names: Vec<(String, String)> = specs
+    let mut spec_names: Vec<(String, String)> = specs
         .iter()
         .map(|(b, p)| {
             let b = b.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
             (b, p.name().to_owned())
         })
         .collect();
+    let mut embree_args = Vec::new();
+    if embree_available() {
+        let mesh = bunny();
+        let dir: PathBuf = criterion_dir().join("embree-input");
+        embree_args = export_for_embree(&mesh, &ray_sets(&mesh, quick), &dir)
+            .map_err(|e| format!("{}: {e}", dir.display()))?;
+        spec_names.push((EMBREE.to_owned(), "f32".to_owned()));
+    } else {
+        eprintln!("note: no Embree reference rows (`{} -c \"import embreex\"` failed)", python());
+    }
+    let measured = spec_names.len();
+    if !embree_args.is_empty() {
+        spec_names.push((EMBREE_NET.to_owned(), "f32".to_owned()));
+    }
     // figures[spec][set] over the rounds.
-    let mut figures = vec![vec![Vec::new(); SETS.len()]; specs.len()];
+    let mut figures = vec![vec![Vec::new(); SETS.len()]; spec_names.len()];
     for round in 0..rounds {
-        for k in 0..specs.len() {
-            let i = (k + round) % specs.len();
+        for k in 0..measured {
+            let i = (k + round) % measured;
             let (b, p) = &spec_names[i];
-            let got = run_child(&format!("{b}:{p}"))?;
+            let got = run_child(&format!("{b}:{p}"), &embree_args)?;
             eprintln!("round {round} {b} {p}: {got:?}");
-            for (set, x) in got.into_iter().enumerate() {
-                figures[i][set].push(x);
+            if b == EMBREE {
+                // The figures, then the binding's cost per ray (ns) of each set.
+                let (raw, cost) = got.split_at(SETS.len());
+                for (set, (&x, &ns)) in raw.iter().zip(cost).enumerate() {
+                    figures[i][set].push(x);
+                    figures[measured][set].push(1e3 / (1e3 / x - ns));
+                }
+            } else {
+                for (set, x) in got.into_iter().enumerate() {
+                    figures[i][set].push(x);
+                }
             }
         }
     }

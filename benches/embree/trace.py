@@ -1,0 +1,55 @@
+"""Embree 4 on the rays of `cargo bench --bench interleaved`: the reference row.
+
+Run by the interleaved bench (never by hand, though it can be) as
+
+    python3 trace.py DIR SET:QUERY [SET:QUERY ...]
+
+where DIR holds what the bench wrote: `bunny.tri` (n x 3 x 3 little-endian f32, each
+triangle's vertices) and one `SET.ray` per ray set (n x 6 f32: origin, then direction), and
+QUERY is `closest` or `any`. Prints one line: for each set the best Mrays/s of three traces,
+then for each set the binding's own cost per ray in ns (the same rays and query on an empty
+scene, where Embree returns at once), which the bench subtracts for its `embree4-net` rows.
+
+Uses the `embreex` package (pip install embreex): Embree 4 behind a Cython loop that makes
+one `rtcIntersect1` or `rtcOccluded1` call per ray, on one thread, with t in [0, 1e37].
+The project does not depend on it: without it the bench leaves the Embree rows out.
+"""
+
+import sys
+import time
+
+import numpy as np
+from embreex import rtcore_scene
+from embreex.mesh_construction import TriangleMesh
+
+REPEATS = 3
+QUERIES = {"closest": "INTERSECT", "any": "OCCLUDED"}
+
+
+def best_mrays(scene, origins, dirs, query):
+    best = 0.0
+    for _ in range(REPEATS):
+        start = time.perf_counter()
+        scene.run(origins, dirs, query=query)
+        best = max(best, len(origins) / (time.perf_counter() - start) / 1e6)
+    return best
+
+
+def main():
+    folder, specs = sys.argv[1], sys.argv[2:]
+    triangles = np.fromfile(f"{folder}/bunny.tri", dtype="<f4").reshape(-1, 3, 3)
+    scene = rtcore_scene.EmbreeScene()
+    TriangleMesh(scene, triangles)
+    empty = rtcore_scene.EmbreeScene()
+    figures, overheads_ns = [], []
+    for spec in specs:
+        name, query = spec.split(":")
+        rays = np.fromfile(f"{folder}/{name}.ray", dtype="<f4").reshape(-1, 6)
+        origins, dirs = np.ascontiguousarray(rays[:, :3]), np.ascontiguousarray(rays[:, 3:])
+        figures.append(best_mrays(scene, origins, dirs, QUERIES[query]))
+        overheads_ns.append(1e3 / best_mrays(empty, origins, dirs, QUERIES[query]))
+    print(" ".join(str(x) for x in figures + overheads_ns))
+
+
+if __name__ == "__main__":
+    main()
