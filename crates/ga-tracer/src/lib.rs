@@ -46,9 +46,9 @@
 //! | Faces | both | both | both |
 //! | Degenerate triangles | never hit (zero area decided exactly at `prepare`, see [`is_degenerate`]) | never hit (same) | never hit (same) |
 //! | NaN or infinite input | miss, no panic | miss, no panic | miss, no panic |
-//! | Per triangle | 3 vertices: 36 B (`f32`), 72 B (`f64`) | `a`, unit normal `n`, reciprocal frame `m_b`, `m_c`: 48 B, 96 B | 3 vertices and the unit normal: 48 B, 96 B |
+//! | Per triangle | 3 vertices: 36 B (`f32`), 72 B (`f64`) | `a`, unit normal `n`, reciprocal frame `m_b`, `m_c`, stored by axis: 48 B, 96 B | 3 vertices and the unit normal, stored by axis: 48 B, 96 B |
 //! | Per ray | nothing | nothing | an orthonormal basis of the plane orthogonal to the ray (a square root, 2 divisions) |
-//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | 3 subtractions, 4 inner products and one scaled vector, then one branch on the edges (rarely passed, so well predicted) before the distance test: 25 operations (a fused multiply-add counted once); one division, for hits only | 3 translated vertices, their coordinates in the plane orthogonal to the ray, 3 edge values of 3 operations: about 45 operations; one division, for hits only |
+//! | Per test | a plane (square root, division), the intersection (division), 3 pairs of edge bivectors and their inner products, 2 divisions for `u`, `v` | the inner products of `a - o` and of `u` with `n`, `m_b`, `m_c` (the triangle stored by axis: two four-lane expressions), `U` and `V` from them, then one branch on the edges (rarely passed, so well predicted) before the distance test: about 25 operations, 13 on four lanes (a fused multiply-add counted once); one division, for hits only | 3 translated vertices, their coordinates in the plane orthogonal to the ray, 3 edge values (one vertex per lane), then one branch on their signs: about 25 operations before the distance test, 45 written out on scalars; one division, for hits only |
 //! | Rare slow path | none | none | exact signs (`orient2d`) when an edge value is exactly 0 |
 //! | `t` measured from | the world origin (loses about 3 digits at `1e3` scene sizes from it) | vertex `a` (one rounded subtraction `a - o`) | vertex `a`, as [`Ga`] |
 //!
@@ -77,6 +77,7 @@
 
 #![deny(missing_docs)]
 
+mod lanes;
 pub mod plucker;
 pub mod precomputed;
 mod real;

@@ -100,12 +100,24 @@
 //!
 //! # Cost per test
 //!
-//! 9 subtractions (translation), 6 inner products for the coordinates (18 operations with
-//! fused multiply-adds), 3 edge values (2 multiplies and a subtraction each), the sign test
-//! (3 comparisons with zero for the fallback, then the both-faces test), the distance (2 inner
-//! products, 2 multiplies, 2 comparisons) and, for a hit, one division and 2 more. About 45
-//! operations, against 24 for [`crate::Ga`]. Per ray: an orthonormal basis (a square root and
-//! two divisions).
+//! On scalars: 9 subtractions (translation), 6 inner products for the coordinates (18
+//! operations with fused multiply-adds), 3 edge values (2 multiplies and a subtraction each),
+//! the sign test (3 comparisons with zero for the fallback, then the both-faces test), the
+//! distance (2 inner products, 2 multiplies, 2 comparisons) and, for a hit, one division and 2
+//! more: about 45 operations. [`PluckerPrim`] stores the triangle by axis, one vertex per lane,
+//! so on four lanes (x86-64 with AVX2 and FMA, as this workspace builds) the translation is 3
+//! vector subtractions, the coordinates of all three vertices 6 vector operations, and the
+//! three edge values 4 lane rotations, 2 multiplies and 1 subtraction, each lane computing
+//! exactly the scalar expression, so every argument below holds lane by lane
+//! (`src/lanes.rs`). The both-faces test is one branch: the three values, all non-zero by
+//! then, have one sign when `w_b` and `w_c` with `w_a`'s sign taken off are both positive, one
+//! minimum and one comparison. About 25 operations before the distance test, against 24 for
+//! [`crate::Ga`]. Per ray: an orthonormal basis (a square root and two divisions).
+//!
+//! The four-lane form and the one-branch sign test took the bunny's 1M incoherent rays (f32,
+//! one thread) from 3.22 to 3.68 Mrays/s, with the watertight `la` kernel at 3.83 on that
+//! (busier) host, and primary rays from 13.5 to 16.9 against `la`'s 17.1 (medians of 9 and 5
+//! alternating processes).
 
 use core::marker::PhantomData;
 
@@ -149,16 +161,22 @@ impl<T> GaPlucker<T> {
 
 /// What [`GaPlucker`] keeps of a triangle: its three vertices, which the edge tests use as
 /// they are (two triangles sharing a vertex must see the same numbers), and the unit normal
-/// for the distance (12 scalars).
+/// for the distance (12 scalars), stored by axis: `axes[k]` is `(a_k, b_k, c_k, n_k)`, so the
+/// three vertices are projected at once, one vertex per lane.
 ///
 /// A degenerate triangle is stored as three copies of `a` with a zero normal: every edge
 /// value is then exactly zero, and so is `u · n`, for every ray.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C, align(16))]
 pub struct PluckerPrim<T> {
-    a: Vector<T>,
-    b: Vector<T>,
-    c: Vector<T>,
-    n: Vector<T>,
+    axes: [[T; 4]; 3],
+}
+
+impl<T: Float> PluckerPrim<T> {
+    /// The vector in lane `lane` of the rows: 0, 1, 2 the vertices, 3 the normal.
+    fn lane(&self, lane: usize) -> Vector<T> {
+        Vector::from_array(self.axes.map(|row| row[lane]))
+    }
 }
 
 /// What [`GaPlucker`] computes once per ray: an orthonormal basis `ex`, `ey` of the plane
@@ -178,12 +196,8 @@ impl<T: GaReal> Intersector for GaPlucker<T> {
 
     fn prepare(&self, tri: &Triangle<T>) -> PluckerPrim<T> {
         let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };
-        PluckerPrim {
-            a: Vector::from_array(a),
-            b: Vector::from_array(b),
-            c: Vector::from_array(c),
-            n: unit_normal(tri),
-        }
+        let n = unit_normal(tri).to_array();
+        PluckerPrim { axes: core::array::from_fn(|k| [a[k], b[k], c[k], n[k]]) }
     }
 
     #[inline]
@@ -230,39 +244,33 @@ fn intersect<T: Float>(
     rd: &PluckerRay<T>,
     t_max: T,
 ) -> Option<TriangleHit<T>> {
-    let o = Vector::from_array(ray.origin);
-    let (sa, sb, sc) = (prim.a - o, prim.b - o, prim.c - o);
-
-    // Each vertex's coordinates in the plane orthogonal to the ray.
-    let coords = |s: Vector<T>| [dot(s, rd.ex), dot(s, rd.ey)];
-    let (pa, pb, pc) = (coords(sa), coords(sb), coords(sc));
-
-    // The edge trivectors, as their dual scalars; w_a is the edge opposite a, and so on.
-    let mut w = [edge_value(pb, pc), edge_value(pc, pa), edge_value(pa, pb)];
-
-    // An exact zero may hide either sign (and NaN has none): decide those exactly, with
-    // the tie rule for exact zeros.
+    // Each vertex's coordinates in the plane orthogonal to the ray (one vertex per lane), and
+    // the edge trivectors as their dual scalars: w_a is the edge opposite a, and so on.
+    let [x, y, w] = T::plucker_edges(&prim.axes, &ray.origin, &rd.ex.to_array(), &rd.ey.to_array());
+    // An exact zero may hide either sign (and NaN has none): those are decided exactly, with
+    // the tie rule for exact zeros, and `inside_exact` also makes the inside test.
     let decided = |x: T| x.abs() > T::ZERO;
-    if !(decided(w[0]) && decided(w[1]) && decided(w[2])) {
-        w = inside_exact([pa, pb, pc])?;
-    }
-
-    // Inside (both faces): no two values of opposite signs (exact zeros, if any, have been
-    // decided by the tie rule in `inside_exact`).
-    let [w_a, w_b, w_c] = w;
-    let any_negative = w_a < T::ZERO || w_b < T::ZERO || w_c < T::ZERO;
-    let any_positive = w_a > T::ZERO || w_b > T::ZERO || w_c > T::ZERO;
-    if any_negative && any_positive {
-        return None;
-    }
+    let [w_a, w_b, w_c] = if decided(w[0]) && decided(w[1]) && decided(w[2]) {
+        // Inside (both faces): the three non-zero values have one sign, i.e. `w_b` and `w_c`
+        // are positive after taking `w_a`'s sign off. One minimum and one branch, which
+        // fails for nearly every triangle tested (a chain of comparisons would be one branch
+        // each; see `Ga`'s module documentation).
+        if w[1].xor_sign(w[0]).min(w[2].xor_sign(w[0])) < T::ZERO {
+            return None;
+        }
+        [w[0], w[1], w[2]]
+    } else {
+        inside_exact([[x[0], y[0]], [x[1], y[1]], [x[2], y[2]]])?
+    };
     let det = w_a + w_b + w_c;
     if det == T::ZERO {
         return None;
     }
 
     // t = (sa · n) / (u · n), tested before dividing (see `Ga`).
-    let num = dot(sa, prim.n);
-    let den = dot(Vector::from_array(ray.dir), prim.n);
+    let n = prim.lane(3);
+    let num = dot(prim.lane(0) - Vector::from_array(ray.origin), n);
+    let den = dot(Vector::from_array(ray.dir), n);
     let num_s = num.xor_sign(den);
     let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
     if !(num_s > T::ZERO && num_s <= t_max * den.abs() * slack) {
@@ -282,7 +290,9 @@ fn intersect<T: Float>(
 /// `((p ∧ q) ∧ û)*` from the coordinates of `p`, `q` in the plane orthogonal to the ray:
 /// `px qy - py qx`, with separate multiplies and a subtraction, so that
 /// `edge_value(q, p) == -edge_value(p, q)` exactly and a non-zero value has the exact sign.
-#[inline(always)]
+/// The kernel computes the three of a triangle at once, with the same operations
+/// ([`Float::plucker_edges`]); the tests check this form.
+#[cfg(test)]
 fn edge_value<T: Float>(p: [T; 2], q: [T; 2]) -> T {
     p[0] * q[1] - p[1] * q[0]
 }

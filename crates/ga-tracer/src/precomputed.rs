@@ -71,20 +71,21 @@
 //! # Cost per test
 //!
 //! Counting a fused multiply-add as one operation, on four lanes where the machine has them
-//! (x86-64 with FMA, as this workspace builds, in `f32`): `s`, 3 broadcasts of the fourth lanes
-//! and 3 subtractions; the inner products of `s` and of `u` with `n`, `m_b`, `m_c`, 3 vector
-//! operations each; `U` and `V`, 1 multiply and 1 multiply-add after broadcasting `num` and
-//! `den`; the edge test, 2 additions, 2 minima and 1 comparison on scalars; the distance test,
-//! 2 multiplies (`t_max |den|`, the slack below) and 2 comparisons. The sign flips `σx` are bit
-//! operations. About 25 operations, 13 of them on four lanes; written out on scalars, 33
-//! (Moller-Trumbore: 27 and a reciprocal). In `f64`, and where the machine lacks FMA, the same
-//! expressions run lane by lane (`frame_products` in `real.rs`) with the same roundings, so both
-//! paths give the same bits. One division, only for a hit.
+//! (x86-64 with AVX2 and FMA, as this workspace builds: one SSE register per row in `f32`, one
+//! AVX register in `f64`): `s`, 3 broadcasts of the fourth lanes and 3 subtractions; the inner
+//! products of `s` and of `u` with `n`, `m_b`, `m_c`, 3 vector operations each; `U` and `V`, 1
+//! multiply and 1 multiply-add after broadcasting `num` and `den`; the edge test, 2 additions,
+//! 2 minima and 1 comparison on scalars; the distance test, 2 multiplies (`t_max |den|`, the
+//! slack below) and 2 comparisons. The sign flips `σx` are bit operations. About 25 operations,
+//! 13 of them on four lanes; written out on scalars, 33 (Moller-Trumbore: 27 and a reciprocal).
+//! Elsewhere the same expressions run lane by lane with the same roundings (`src/lanes.rs`),
+//! so both forms give the same bits. One division, only for a hit.
 //!
-//! On the bunny's 1M incoherent rays (f32, one thread) the four-lane form ran at 5.60 Mrays/s,
-//! against 5.40 for the previous scalar form (`q = num u - den s`, then `q · m_b`, `q · m_c`) and
-//! 5.79 for the watertight `la` kernel (medians of 9 alternating processes); on primary rays at
-//! 20.7, against 20.1 (`la`: 17.1).
+//! Against the previous scalar form (`q = num u - den s`, then `q · m_b` and `q · m_c`, three
+//! scalar inner products after two), the four-lane form took the bunny's 1M incoherent rays
+//! (f32, one thread) from 5.40 to 5.60 Mrays/s, with the watertight `la` kernel at 5.79 (medians
+//! of 9 alternating processes), and primary rays from 20.1 to 20.7 (`la`: 17.1). The figures of
+//! every back end are in `results/interleaved.csv`.
 //!
 //! # One predictable branch: the edges first
 //!

@@ -202,12 +202,13 @@ fn plucker_has_no_cracks_and_no_double_hits() {
 }
 
 /// The crack counter is not vacuous: the kernels that are not watertight do leave cracks in
-/// `f32` on these rays.
+/// `f32` on these rays. (Built without FMA, `ga` rounds differently and its cracks on these
+/// rays are all at edges.)
 #[test]
 fn the_other_kernels_leave_cracks() {
     for_each_kernel!(report);
     let [edges, vertices] = cracks::<ga_tracer::Ga<f32>>(0x6a_2001, 0.0, false, RAYS);
-    assert!(edges > 0 && vertices > 0, "{edges} {vertices}");
+    assert!(edges > 0 && (vertices > 0 || !cfg!(target_feature = "fma")), "{edges} {vertices}");
 }
 
 #[test]
