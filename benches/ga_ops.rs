@@ -64,9 +64,8 @@ const BATCH: usize = 256;
 struct Spec {
     op: &'static str,
     precision: &'static str,
-    has_glam: bool,
     target: Target,
-    /// The paired measurement's ratio (none without a glam counterpart).
+    /// The paired measurement's ratio; `None` exactly when glam has no counterpart.
     paired_ratio: Option<f64>,
 }
 
@@ -227,26 +226,15 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                 || burst(&clock, $ga_inputs, &ga, batches),
                 || burst(&clock, $glam_inputs, &glam, batches),
             );
-            let spec = Spec {
-                op: $op,
-                precision: $precision,
-                has_glam: true,
-                target: $target,
-                paired_ratio: Some(ratio),
-            };
+            let spec =
+                Spec { op: $op, precision: $precision, target: $target, paired_ratio: Some(ratio) };
             bench_pair(c, &spec, ($ga_inputs, ga), ($glam_inputs, glam));
             specs.push(spec);
         }};
     }
     macro_rules! single {
         ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr) => {{
-            let spec = Spec {
-                op: $op,
-                precision: $precision,
-                has_glam: false,
-                target: $target,
-                paired_ratio: None,
-            };
+            let spec = Spec { op: $op, precision: $precision, target: $target, paired_ratio: None };
             bench_ga(c, &spec, ($ga_inputs, $ga));
             specs.push(spec);
         }};
@@ -394,7 +382,7 @@ fn main() {
             let group = spec.group();
             // A benchmark filtered out of this run has no fresh estimate: no row for it.
             let ga = per_op(&group, "ga")?;
-            let glam = if spec.has_glam { per_op(&group, "glam") } else { None };
+            let glam = if spec.paired_ratio.is_some() { per_op(&group, "glam") } else { None };
             let figures =
                 GaOpsFigures { ga_ns: Some(ga), glam_ns: glam, paired_ratio: spec.paired_ratio };
             Some(GaOpsRow::new(spec.op, spec.precision, figures, spec.target, &cpu))

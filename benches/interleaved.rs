@@ -87,10 +87,12 @@ struct Row {
 /// The rays of the comparison, in `f64`.
 fn ray_sets(mesh: &Mesh, quick: bool) -> Vec<(RaySet, Vec<Ray<f64>>)> {
     let (side, incoherent) = if quick { (64, 4096) } else { (1024, 1_000_000) };
+    // Both primary sets are the same rays: made once.
+    let primary = primary_rays(mesh, side, side);
     SETS.iter()
         .map(|&set| {
             let rays = if set.is_primary() {
-                primary_rays(mesh, side, side)
+                primary.clone()
             } else {
                 incoherent_rays(mesh, incoherent, INCOHERENT_SEED)
             };
@@ -151,9 +153,11 @@ fn embree_available() -> bool {
         .is_ok_and(|out| out.status.success())
 }
 
-/// Writes the bunny and the ray sets for the Embree script: `bunny.tri` (each triangle's
-/// vertices) and `<set>.ray` (origin and direction per ray), little-endian `f32`, the rays
-/// rounded from `f64` once, as the `f32` back ends round them. Returns the script's arguments.
+/// Writes the bunny and the rays for the Embree script: `bunny.tri` (each triangle's
+/// vertices) and `primary.ray`, `incoherent.ray` (origin and direction per ray; each written
+/// once, though two sets share the primary rays), little-endian `f32`, the rays rounded from
+/// `f64` once, as the `f32` back ends round them. Returns the script's arguments, one
+/// `rays:query` per set.
 fn export_for_embree(
     mesh: &Mesh,
     sets: &[(RaySet, Vec<Ray<f64>>)],
@@ -173,14 +177,19 @@ fn export_for_embree(
         triangles.iter().flat_map(|t| t.vertices().into_iter().flatten()),
     )?;
     let mut args = vec![dir.display().to_string()];
+    let mut written = Vec::new();
     for (set, rays) in sets {
-        let values = rays.iter().flat_map(|r| r.origin.into_iter().chain(r.dir));
-        write(&dir.join(format!("{}.ray", set.name())), values.map(|x| x as f32))?;
+        let file = if set.is_primary() { "primary" } else { "incoherent" };
+        if !written.contains(&file) {
+            let values = rays.iter().flat_map(|r| r.origin.into_iter().chain(r.dir));
+            write(&dir.join(format!("{file}.ray")), values.map(|x| x as f32))?;
+            written.push(file);
+        }
         let query = match set.query() {
             Query::Closest => "closest",
             Query::Any => "any",
         };
-        args.push(format!("{}:{query}", set.name()));
+        args.push(format!("{file}:{query}"));
     }
     Ok(args)
 }

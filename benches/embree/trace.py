@@ -2,11 +2,11 @@
 
 Run by the interleaved bench (never by hand, though it can be) as
 
-    python3 trace.py DIR SET:QUERY [SET:QUERY ...]
+    python3 trace.py DIR RAYS:QUERY [RAYS:QUERY ...]
 
 where DIR holds what the bench wrote: `bunny.tri` (n x 3 x 3 little-endian f32, each
-triangle's vertices) and one `SET.ray` per ray set (n x 6 f32: origin, then direction), and
-QUERY is `closest` or `any`. Prints one line: for each set the best Mrays/s of three traces,
+triangle's vertices) and `RAYS.ray` for each RAYS named (n x 6 f32: origin, then
+direction), and QUERY is `closest` or `any`. Prints one line: for each set the best Mrays/s of three traces,
 then for each set the binding's own cost per ray in ns (the same rays and query on an empty
 scene, where Embree returns at once), which the bench subtracts for its `embree4-net` rows.
 
@@ -41,11 +41,13 @@ def main():
     scene = rtcore_scene.EmbreeScene()
     TriangleMesh(scene, triangles)
     empty = rtcore_scene.EmbreeScene()
-    figures, overheads_ns = [], []
+    figures, overheads_ns, loaded = [], [], {}
     for spec in specs:
         name, query = spec.split(":")
-        rays = np.fromfile(f"{folder}/{name}.ray", dtype="<f4").reshape(-1, 6)
-        origins, dirs = np.ascontiguousarray(rays[:, :3]), np.ascontiguousarray(rays[:, 3:])
+        if name not in loaded:
+            rays = np.fromfile(f"{folder}/{name}.ray", dtype="<f4").reshape(-1, 6)
+            loaded[name] = np.ascontiguousarray(rays[:, :3]), np.ascontiguousarray(rays[:, 3:])
+        origins, dirs = loaded[name]
         figures.append(best_mrays(scene, origins, dirs, QUERIES[query]))
         overheads_ns.append(1e3 / best_mrays(empty, origins, dirs, QUERIES[query]))
     print(" ".join(str(x) for x in figures + overheads_ns))

@@ -4,7 +4,8 @@
 //! The benches measure with criterion and then turn its estimates into `results/*.csv`: after
 //! the groups have run, [`mean_ns`] (or [`median_ns`]) reads
 //! `<criterion dir>/<group>/<function>/new/estimates.json` (the mean's or the median's point
-//! estimate) for each measurement and the bench writes one CSV row per comparison. Reading criterion's own files keeps one source of truth for every figure.
+//! estimate) for each measurement and the bench writes one CSV row per comparison. Reading
+//! criterion's own files keeps one source of truth for every figure.
 //!
 //! ```
 //! use wedge_benches::{GaOpsFigures, GaOpsRow, Target};

@@ -14,6 +14,7 @@
 //! test checks it bit for bit on random input, NaN and infinities included.
 
 use ga::Scalar;
+use ga::g3::Vector;
 
 /// The `ga` kernel's undivided values `[num, den, U, V]`, lane by lane: for a triangle stored
 /// by axis (`axes[k] = (n_k, m_b_k, m_c_k, a_k)`) and a ray, with `s = a - o`, `num = s · n`,
@@ -171,31 +172,15 @@ mod x86 {
 
 /// Without AVX2 and FMA the four-lane forms are the lane-by-lane definitions.
 #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma")))]
-pub use portable::{frame_products_f32, frame_products_f64, plucker_edges_f32, plucker_edges_f64};
+pub use {
+    frame_products as frame_products_f32, frame_products as frame_products_f64,
+    plucker_edges as plucker_edges_f32, plucker_edges as plucker_edges_f64,
+};
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma")))]
-mod portable {
-    macro_rules! lane_by_lane {
-        ($t:ty, $frame:ident, $plucker:ident) => {
-            #[inline(always)]
-            pub fn $frame(axes: &[[$t; 4]; 3], origin: &[$t; 3], dir: &[$t; 3]) -> [$t; 4] {
-                super::frame_products(axes, origin, dir)
-            }
-
-            #[inline(always)]
-            pub fn $plucker(
-                axes: &[[$t; 4]; 3],
-                origin: &[$t; 3],
-                ex: &[$t; 3],
-                ey: &[$t; 3],
-            ) -> [[$t; 4]; 3] {
-                super::plucker_edges(axes, origin, ex, ey)
-            }
-        };
-    }
-
-    lane_by_lane!(f32, frame_products_f32, plucker_edges_f32);
-    lane_by_lane!(f64, frame_products_f64, plucker_edges_f64);
+/// The vector in lane `lane` of a triangle stored by axis.
+#[inline(always)]
+pub fn lane<T: Scalar>(axes: &[[T; 4]; 3], lane: usize) -> Vector<T> {
+    Vector::from_array(axes.map(|row| row[lane]))
 }
 
 #[cfg(test)]

@@ -125,6 +125,7 @@ use ga::g3::Vector;
 use intersect::{Intersector, Ray, Triangle, TriangleHit};
 use robust::{Coord, orient2d};
 
+use crate::lanes;
 use crate::real::private::Float;
 use crate::{GaReal, is_degenerate};
 
@@ -170,13 +171,6 @@ impl<T> GaPlucker<T> {
 #[repr(C, align(16))]
 pub struct PluckerPrim<T> {
     axes: [[T; 4]; 3],
-}
-
-impl<T: Float> PluckerPrim<T> {
-    /// The vector in lane `lane` of the rows: 0, 1, 2 the vertices, 3 the normal.
-    fn lane(&self, lane: usize) -> Vector<T> {
-        Vector::from_array(self.axes.map(|row| row[lane]))
-    }
 }
 
 /// What [`GaPlucker`] computes once per ray: an orthonormal basis `ex`, `ey` of the plane
@@ -268,8 +262,9 @@ fn intersect<T: Float>(
     }
 
     // t = (sa · n) / (u · n), tested before dividing (see `Ga`).
-    let n = prim.lane(3);
-    let num = dot(prim.lane(0) - Vector::from_array(ray.origin), n);
+    // Lane 3 of the rows is the normal, lane 0 the vertex a.
+    let n = lanes::lane(&prim.axes, 3);
+    let num = dot(lanes::lane(&prim.axes, 0) - Vector::from_array(ray.origin), n);
     let den = dot(Vector::from_array(ray.dir), n);
     let num_s = num.xor_sign(den);
     let slack = T::ONE + T::EPSILON * T::from_f64(4.0);

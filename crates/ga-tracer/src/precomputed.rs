@@ -164,33 +164,28 @@ impl<T: GaReal> GaPrim<T> {
         Self { axes: core::array::from_fn(|k| [n[k], m_b[k], m_c[k], a[k]]) }
     }
 
-    /// The vector in lane `lane` of the rows.
-    fn lane(&self, lane: usize) -> Vector<T> {
-        Vector::from_array(self.axes.map(|row| row[lane]))
-    }
-
     /// The vertex `a`.
     #[must_use]
     pub fn a(&self) -> Vector<T> {
-        self.lane(3)
+        crate::lanes::lane(&self.axes, 3)
     }
 
     /// The unit normal `n` (zero for a degenerate triangle).
     #[must_use]
     pub fn n(&self) -> Vector<T> {
-        self.lane(0)
+        crate::lanes::lane(&self.axes, 0)
     }
 
     /// `m_b = N⁻¹ | (a - c)`: `(p - a) · m_b` is the barycentric weight of `b`.
     #[must_use]
     pub fn m_b(&self) -> Vector<T> {
-        self.lane(1)
+        crate::lanes::lane(&self.axes, 1)
     }
 
     /// `m_c = N⁻¹ | (b - a)`: `(p - a) · m_c` is the barycentric weight of `c`.
     #[must_use]
     pub fn m_c(&self) -> Vector<T> {
-        self.lane(2)
+        crate::lanes::lane(&self.axes, 2)
     }
 
     /// The data of triangle `tri`, computed in `f64` and rounded once to `T`.
