@@ -17,7 +17,7 @@ use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::BuildRow;
 use wedge_benches::throughput::scenes::{BenchScene, bunny, subdivided};
 use wedge_benches::{
-    bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
+    bench_times, cpu_model, criterion_dir, mean_ns, output_path, quick_mode, write_csv,
 };
 
 /// What `Accel::build` times as the BVH build: the boxes, then the tree.
@@ -101,6 +101,7 @@ fn main() {
 
     let dir = criterion_dir();
     let cpu = cpu_model();
+    let benchmarks = measured.len();
     let rows: Vec<BuildRow> = measured
         .into_iter()
         .filter_map(|m| {
@@ -115,8 +116,7 @@ fn main() {
     if rows.is_empty() {
         return;
     }
-    let path =
-        if quick_mode() { dir.join("build.quick.csv") } else { results_dir().join("build.csv") };
+    let path = output_path("build", "csv", rows.len() == benchmarks);
     write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
     println!(
         "\n{:<11} {:>9} {:<4} {:>3} {:>9} {:>7} {:>6}",

@@ -53,7 +53,7 @@ use glam::{DQuat, DVec3, Quat, Vec3};
 use wedge_benches::clock::{ThreadClock, configured};
 use wedge_benches::{
     GaOpsFigures, GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, median, median_ns,
-    quick_mode, results_dir, write_csv,
+    output_path, quick_mode, write_csv,
 };
 
 /// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
@@ -391,15 +391,7 @@ fn main() {
     if rows.is_empty() {
         return;
     }
-    // Only a full, non-quick run replaces results/ga_ops.csv: a run filtered to a few benchmarks
-    // (`cargo bench ... -- rotor`) would otherwise drop the other rows.
-    let path = if quick_mode() {
-        dir.join("ga_ops.quick.csv")
-    } else if rows.len() < specs.len() {
-        dir.join("ga_ops.partial.csv")
-    } else {
-        results_dir().join("ga_ops.csv")
-    };
+    let path = output_path("ga_ops", "csv", rows.len() == specs.len());
     write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
     println!("\n{:<44} {:>5} {:>9} {:>9} {:>7}  target", "op", "prec", "ga ns", "glam ns", "ratio");
     for row in &rows {

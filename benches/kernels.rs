@@ -25,7 +25,7 @@ use raytrace::{Backend, Job, Precision, dispatch};
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::{KernelRow, fill_kernel_ratios_to_la};
 use wedge_benches::{
-    SplitMix64, bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
+    SplitMix64, bench_times, cpu_model, criterion_dir, mean_ns, output_path, write_csv,
 };
 
 /// Ray-triangle pairs per iteration: the largest per-triangle data (96 bytes) and rays fit in
@@ -180,6 +180,7 @@ fn main() {
 
     let dir = criterion_dir();
     let cpu = cpu_model();
+    let benchmarks = measured.len();
     let mut rows: Vec<KernelRow> = measured
         .into_iter()
         .filter_map(|m| {
@@ -199,11 +200,8 @@ fn main() {
         return;
     }
     fill_kernel_ratios_to_la(&mut rows);
-    let path = if quick_mode() {
-        dir.join("kernels.quick.csv")
-    } else {
-        results_dir().join("kernels.csv")
-    };
+    // A benchmark filtered out of this run has no fresh estimate and no row.
+    let path = output_path("kernels", "csv", rows.len() == benchmarks);
     write_csv(&path, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
     println!(
         "\n{:<11} {:<4} {:<6} {:>9} {:>7} {:>6}",

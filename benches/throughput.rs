@@ -16,8 +16,9 @@
 //! Run: `cargo bench -p wedge-benches --bench throughput`. Environment:
 //! - `WEDGE_BENCH_QUICK=1`: 128 x 128 primary rays and 16,384 incoherent rays, a few
 //!   milliseconds per benchmark; CSV and SVG go to the criterion directory (a smoke test).
-//! - `WEDGE_BENCH_SCENES=bunny,torus` and `WEDGE_BENCH_BACKENDS=la,ga`: only these (the CSV
-//!   then holds only these rows).
+//! - `WEDGE_BENCH_SCENES=bunny,torus` and `WEDGE_BENCH_BACKENDS=la,ga`: only these. Such a
+//!   run, like one filtered by criterion (`-- bunny`), writes `throughput.partial.csv` and
+//!   `.svg` to the criterion directory, never over `results/`.
 
 use std::hint::black_box;
 use std::thread::available_parallelism;
@@ -35,7 +36,7 @@ use wedge_benches::throughput::rows::{ThroughputRow, fill_ratios_to_la};
 use wedge_benches::throughput::scenes::{BenchScene, all_scenes};
 use wedge_benches::throughput::trace::{Traced, trace, trace_parallel};
 use wedge_benches::{
-    bench_times, cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv,
+    bench_times, cpu_model, criterion_dir, mean_ns, output_path, quick_mode, write_csv,
 };
 
 /// Scenes with at least this many triangles also get the 1920 x 1080 alpha frame.
@@ -216,6 +217,7 @@ fn main() {
     criterion.final_summary();
 
     let dir = criterion_dir();
+    let benchmarks = measured.len();
     let mut rows: Vec<ThroughputRow> = measured
         .into_iter()
         .filter_map(|m| {
@@ -231,11 +233,10 @@ fn main() {
         return;
     }
     fill_ratios_to_la(&mut rows);
-    let out = if quick { dir.clone() } else { results_dir() };
-    let suffix = if quick { ".quick" } else { "" };
-    let csv = out.join(format!("throughput{suffix}.csv"));
+    let complete = rows.len() == benchmarks && scene_filter.is_none() && backend_filter.is_none();
+    let csv = output_path("throughput", "csv", complete);
     write_csv(&csv, &rows).unwrap_or_else(|e| panic!("writing {}: {e}", csv.display()));
-    let svg = out.join(format!("throughput{suffix}.svg"));
+    let svg = output_path("throughput", "svg", complete);
     let title = format!("Ray throughput, same BVH for every back end ({cpu})");
     draw_throughput_svg(&svg, &rows, &title)
         .unwrap_or_else(|e| panic!("writing {}: {e}", svg.display()));

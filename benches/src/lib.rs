@@ -50,6 +50,22 @@ pub fn quick_mode() -> bool {
     std::env::var("WEDGE_BENCH_QUICK").is_ok_and(|v| v == "1")
 }
 
+/// Where a bench writes its output `stem.ext` (`"kernels", "csv"`): `results/` only after a
+/// complete, non-quick run. A quick run writes `stem.quick.ext` and an incomplete one (a
+/// criterion filter after `--`, or a selection by environment variable) `stem.partial.ext`,
+/// both in the criterion directory, so that neither replaces a table in `results/` with
+/// part of it.
+#[must_use]
+pub fn output_path(stem: &str, ext: &str, complete: bool) -> PathBuf {
+    if quick_mode() {
+        criterion_dir().join(format!("{stem}.quick.{ext}"))
+    } else if !complete {
+        criterion_dir().join(format!("{stem}.partial.{ext}"))
+    } else {
+        results_dir().join(format!("{stem}.{ext}"))
+    }
+}
+
 /// Warm-up and measurement time for one benchmark: about 20 ms each in quick mode, criterion's
 /// usual 3 s and 5 s otherwise.
 #[must_use]
@@ -272,5 +288,28 @@ impl SplitMix64 {
     /// `N` values uniform in `[-1, 1)`.
     pub fn array<const N: usize>(&mut self) -> [f64; N] {
         std::array::from_fn(|_| self.range(-1.0, 1.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_a_complete_full_run_writes_to_results() {
+        let (complete, part) =
+            (output_path("kernels", "csv", true), output_path("kernels", "csv", false));
+        if quick_mode() {
+            assert_eq!(complete, criterion_dir().join("kernels.quick.csv"));
+            assert_eq!(part, complete);
+        } else {
+            assert_eq!(complete, results_dir().join("kernels.csv"));
+            assert_eq!(part, criterion_dir().join("kernels.partial.csv"));
+        }
+        assert!(output_path("throughput", "svg", false).ends_with(if quick_mode() {
+            "throughput.quick.svg"
+        } else {
+            "throughput.partial.svg"
+        }));
     }
 }
