@@ -275,7 +275,7 @@ fn intersect<T: Float>(
     let n = lanes::lane(&prim.axes, 3);
     let num = dot(lanes::lane(&prim.axes, 0) - Vector::from_array(ray.origin), n);
     let den = dot(Vector::from_array(ray.dir), n);
-    let num_s = num.xor_sign(den);
+    let num_s = num * T::ONE.copy_sign(den);
     let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
     if !(num_s > T::ZERO && num_s <= t_max * den.abs() * slack) {
         return None;

@@ -1,5 +1,5 @@
 //! The precisions the GA back end supports, and what its kernels need beyond [`ga::Scalar`]:
-//! bit-level sign operations, and the four-lane parts of the `ga` and `ga-plucker` kernels
+//! sign operations, and the four-lane parts of the `ga` and `ga-plucker` kernels
 //! for each precision ([`crate::lanes`]).
 
 /// A precision the GA back end supports: `f32` or `f64`.
@@ -19,10 +19,6 @@ pub(crate) mod private {
         /// `1` or `-1` times `|self|`, with the sign of `sign` (its sign bit, so `-0.0`
         /// counts as negative).
         fn copy_sign(self, sign: Self) -> Self;
-
-        /// `self`, negated when `sign_of` has its sign bit set: `x * sign(s)` without a
-        /// multiply or a branch (one AND and one XOR of the bit patterns).
-        fn xor_sign(self, sign_of: Self) -> Self;
 
         /// `x` rounded to this precision, keeping its sign when it is non-zero: a value that
         /// would round to zero becomes the smallest subnormal of the same sign. The
@@ -50,17 +46,11 @@ pub(crate) mod private {
     }
 
     macro_rules! impl_float {
-        ($t:ident, $bits:ident, $frame:path, $plucker:path) => {
+        ($t:ident, $frame:path, $plucker:path) => {
             impl Float for $t {
                 #[inline(always)]
                 fn copy_sign(self, sign: Self) -> Self {
                     self.copysign(sign)
-                }
-
-                #[inline(always)]
-                fn xor_sign(self, sign_of: Self) -> Self {
-                    const SIGN: $bits = 1 << ($bits::BITS - 1);
-                    $t::from_bits(self.to_bits() ^ (sign_of.to_bits() & SIGN))
                 }
 
                 #[inline]
@@ -88,22 +78,13 @@ pub(crate) mod private {
     }
 
     use crate::lanes;
-    impl_float!(f32, u32, lanes::frame_products_f32, lanes::plucker_edges_f32);
-    impl_float!(f64, u64, lanes::frame_products_f64, lanes::plucker_edges_f64);
+    impl_float!(f32, lanes::frame_products_f32, lanes::plucker_edges_f32);
+    impl_float!(f64, lanes::frame_products_f64, lanes::plucker_edges_f64);
 }
 
 #[cfg(test)]
 mod tests {
     use super::private::Float;
-
-    #[test]
-    fn xor_sign_flips_only_for_negative_signs() {
-        assert_eq!(3.0f32.xor_sign(-2.0), -3.0);
-        assert_eq!(3.0f32.xor_sign(2.0), 3.0);
-        assert_eq!((-3.0f64).xor_sign(-0.5), 3.0);
-        assert_eq!(1.0f64.xor_sign(-0.0), -1.0);
-        assert!(f64::NAN.xor_sign(-1.0).is_nan());
-    }
 
     #[test]
     fn keep_sign_never_rounds_a_nonzero_to_zero() {
