@@ -109,9 +109,9 @@
 //! vector subtractions, the coordinates of all three vertices 6 vector operations, and the
 //! three edge values 4 lane rotations, 2 multiplies and 1 subtraction, each lane computing
 //! exactly the scalar expression, so every argument below holds lane by lane
-//! (`src/lanes.rs`). The outside test, which ends nearly every test, comes first and is one
-//! branch: `w_b` or `w_c` times `w_a`'s sign (`±1`, exact) is below zero, and `w_a` is
-//! neither zero nor NaN. A value below zero is neither either, so two edge values of exact,
+//! (`src/lanes.rs`). The outside test, which ends nearly every test, comes first: one
+//! branch on `w_b` or `w_c` times `w_a`'s sign (`±1`, exact) being below zero, and a
+//! predictable one on `w_a` being neither zero nor NaN. A value below zero is neither either, so two edge values of exact,
 //! opposite signs put the ray outside, whatever the third. Only then are the three values
 //! checked for zeros (the fallback). About 25 operations before the distance test, against 24
 //! for [`crate::Ga`]. Per ray: an orthonormal basis (a square root and two divisions).
@@ -254,9 +254,10 @@ fn intersect<T: Float>(
     // Outside, the case of nearly every triangle tested, first: `w_b` or `w_c` is below zero
     // once multiplied by `w_a`'s sign (exact: a product with ±1). A value below zero is
     // neither zero nor NaN, so with `w_a` decided too, two values of exact, opposite signs
-    // prove the miss, whatever the third. The comparisons are combined without branching, so
-    // the test is one branch (a chain of comparisons would be one branch each; see `Ga`'s
-    // module documentation).
+    // prove the miss, whatever the third. The compiler combines the two comparisons into one
+    // branch, and checks `w_a` in a second that the predictor gets right (it is zero or NaN
+    // almost never). A branch per comparison would be a coin toss each (see `Ga`'s module
+    // documentation, where an OR of three comparisons was split into such a chain).
     let sign = T::ONE.copy_sign(w[0]);
     if ((w[1] * sign < T::ZERO) | (w[2] * sign < T::ZERO)) & decided(w[0]) {
         return None;
