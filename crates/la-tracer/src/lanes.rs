@@ -46,10 +46,10 @@ pub trait Lanes: Real {
     fn rotate_back(v: Self::V) -> Self::V;
     /// Whether some lane is `== 0` (either zero).
     fn any_zero(v: Self::V) -> bool;
-    /// Whether some lane is `< 0` (NaN is not).
-    fn any_negative(v: Self::V) -> bool;
-    /// Whether some lane is `> 0` (NaN is not).
-    fn any_positive(v: Self::V) -> bool;
+    /// Whether the lanes' sign bits differ. With no lane zero or NaN: whether one lane is
+    /// `< 0` and another `> 0`. One mask of the sign bits and one range check, so that the
+    /// caller's test is one branch.
+    fn mixed_signs(v: Self::V) -> bool;
     /// `rotate(x) * y - rotate(y) * x`, lane by lane, with an error small enough that the sign
     /// of each lane is that of the exact value: the watertight kernel's fallback when the
     /// plain computation gives a zero. See [`crate::Watertight`].
@@ -96,12 +96,9 @@ impl Lanes for f32 {
         v.cmpeq(Vec3A::ZERO).any()
     }
     #[inline(always)]
-    fn any_negative(v: Vec3A) -> bool {
-        v.cmplt(Vec3A::ZERO).any()
-    }
-    #[inline(always)]
-    fn any_positive(v: Vec3A) -> bool {
-        v.cmpgt(Vec3A::ZERO).any()
+    fn mixed_signs(v: Vec3A) -> bool {
+        let m = v.is_negative_bitmask();
+        m != 0 && m != 0b111
     }
     /// Products of two `f32` are exact in `f64` (24 + 24 significand bits fit in 53, and
     /// the exponent range is wide enough), so the `f64` difference is the exact value rounded
@@ -153,12 +150,9 @@ impl Lanes for f64 {
         v.cmpeq(DVec3::ZERO).any()
     }
     #[inline(always)]
-    fn any_negative(v: DVec3) -> bool {
-        v.cmplt(DVec3::ZERO).any()
-    }
-    #[inline(always)]
-    fn any_positive(v: DVec3) -> bool {
-        v.cmpgt(DVec3::ZERO).any()
+    fn mixed_signs(v: DVec3) -> bool {
+        let m = v.is_negative_bitmask();
+        m != 0 && m != 0b111
     }
     /// There is no wider hardware type than `f64`, so each lane `a*b - c*d` is computed with
     /// Kahan's difference of products: `w = c*d` rounded, `e = w - c*d` exactly (one fused
@@ -183,6 +177,24 @@ impl Lanes for f64 {
 mod tests {
     use super::Lanes;
     use glam::{DVec3, Vec3A};
+
+    /// One sign everywhere is not mixed, whatever the sizes; any other combination is, and
+    /// only three lanes count (`Vec3A` has a fourth, unused).
+    #[test]
+    fn mixed_signs_reads_the_three_sign_bits() {
+        for (v, mixed) in [
+            ([1.0, 2.0, 3.0], false),
+            ([-1.0, -2e30, -1e-30], false),
+            ([1.0, -2.0, 3.0], true),
+            ([-1.0, 2.0, 3.0], true),
+            ([f64::INFINITY, 1.0, -1.0], true),
+            ([-f64::INFINITY, -1.0, -1.0], false),
+        ] {
+            assert_eq!(<f64 as Lanes>::mixed_signs(DVec3::from_array(v)), mixed, "{v:?}");
+            let v32 = Vec3A::from_array(v.map(|x| x as f32));
+            assert_eq!(<f32 as Lanes>::mixed_signs(v32), mixed, "{v:?}");
+        }
+    }
 
     /// Fibonacci numbers: `F(n+1) F(n-1) - F(n)^2 = (-1)^n`, a difference of two huge
     /// products that is exactly 1 in size.

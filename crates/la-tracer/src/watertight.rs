@@ -206,17 +206,19 @@ impl<T: GlamReal> Intersector for Watertight<T> {
 
         // Step 4: an exact zero may be a rounded nonzero; redo all three with an exact sign,
         // and if a zero remains the ray is exactly on an edge's line: the tie rule decides.
-        // Step 5: both-sided inside test.
+        // Step 5: both-sided inside test, on the sign bits (one branch). A NaN lane's sign bit
+        // is arbitrary; a NaN that passes makes `det` NaN, which fails the distance test
+        // below, so it is a miss either way.
         if T::any_zero(wuv) {
             wuv = T::edge_functions_exact_sign(x, y);
             if T::any_zero(wuv) {
                 if !inside_with_ties::<T>(wuv, x, y) {
                     return None;
                 }
-            } else if T::any_negative(wuv) && T::any_positive(wuv) {
+            } else if T::mixed_signs(wuv) {
                 return None;
             }
-        } else if T::any_negative(wuv) && T::any_positive(wuv) {
+        } else if T::mixed_signs(wuv) {
             return None;
         }
 
