@@ -111,9 +111,9 @@
 //! exactly the scalar expression, so every argument below holds lane by lane
 //! (`src/lanes.rs`). The outside test, which ends nearly every test, comes first: one
 //! branch on `w_b` or `w_c` times `w_a`'s sign (`±1`, exact) being below zero, and a
-//! predictable one on `w_a` being neither zero nor NaN. A value below zero is neither either, so two edge values of exact,
-//! opposite signs put the ray outside, whatever the third. Only then are the three values
-//! checked for zeros (the fallback). About 25 operations before the distance test, against 24
+//! predictable one on `w_a` being neither zero nor NaN. A value below zero is not zero or
+//! NaN either, so two edge values of exact, opposite signs put the ray outside, whatever the
+//! third. Only then are the three values checked for zeros (the fallback). About 25 operations before the distance test, against 24
 //! for [`crate::Ga`]. Per ray: an orthonormal basis (a square root and two divisions).
 //!
 //! The four-lane form and the one-branch sign test took the bunny's 1M incoherent rays (f32,
