@@ -443,7 +443,7 @@ fn bad_raycast_inputs_fail_with_one_line_and_leave_nothing() {
     let hits = d.join("hits.npy");
     let (none, no_obj, csv) = (d.join("none.npy"), d.join("no.obj"), d.join("hits.csv"));
     let cases: Vec<(Vec<&dyn AsRef<std::ffi::OsStr>>, &str)> = vec![
-        (vec![&obj, &none, &hits], "none.npy: cannot read"),
+        (vec![&obj, &none, &hits], "none.npy: file not found"),
         (vec![&obj, &ints, &hits], "'<i4'"),
         (vec![&obj, &big_endian, &hits], "'>f4'"),
         (vec![&obj, &shape, &hits], "(2, 5)"),

@@ -49,6 +49,7 @@
 //!   and any-hit queries and their brute-force references.
 //! - [`camera`]: a pinhole camera and the exact pixel-to-ray mapping.
 //! - [`frame`]: per-pixel results of a render.
+//! - [`input`]: reading input files: regular files only, bounded, without aborting.
 //! - [`render`](mod@render): the render loop.
 //! - [`output`]: image and data writers.
 
@@ -58,6 +59,7 @@ pub mod accel;
 pub mod bvh;
 pub mod camera;
 pub mod frame;
+pub mod input;
 pub mod output;
 pub mod render;
 pub mod scene;

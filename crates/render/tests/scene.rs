@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use render::input::InputError;
 use render::scene::{Mesh, SceneError};
 
 /// Writes `text` to `name` in a fresh temporary directory and loads it.
@@ -121,14 +122,14 @@ fn missing_and_unreadable_files() {
     let dir = tempfile::tempdir().unwrap();
     let missing = dir.path().join("nope.obj");
     let err = Mesh::load(&missing).unwrap_err();
-    assert!(matches!(err, SceneError::NotFound { .. }));
+    assert!(matches!(err, SceneError::Input(InputError::NotFound { .. })));
     assert_eq!(err.to_string(), format!("{}: file not found", missing.display()));
 
     // A directory cannot be read as a file.
     let err = Mesh::load(dir.path()).unwrap_err();
-    assert!(matches!(err, SceneError::Unreadable { .. }), "{err:?}");
+    assert!(matches!(err, SceneError::Input(InputError::NotAFile { .. })), "{err:?}");
     let msg = err.to_string();
-    assert!(msg.starts_with(&format!("{}: cannot read the file: ", dir.path().display())));
+    assert_eq!(msg, format!("{}: is a directory, not a file", dir.path().display()));
     assert!(!msg.contains('\n'));
 }
 

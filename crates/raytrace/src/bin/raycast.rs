@@ -79,8 +79,7 @@ fn run(cli: &Cli) -> anyhow::Result<()> {
     let stats_file = raytrace::create_stats_file(cli.stats.as_deref())?;
     let pool = raytrace::thread_pool(cli.threads)?;
 
-    let bytes = std::fs::read(&cli.rays)
-        .with_context(|| format!("{}: cannot read the rays", cli.rays.display()))?;
+    let bytes = render::input::read_file(&cli.rays)?;
     let rays = npy::read_f64_matrix(&bytes, 6).with_context(|| cli.rays.display().to_string())?;
     drop(bytes);
 

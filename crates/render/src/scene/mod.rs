@@ -31,7 +31,7 @@
 mod check;
 
 use std::borrow::Cow;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use intersect::{Real, Triangle};
 
@@ -40,20 +40,9 @@ use crate::bvh::Aabb;
 /// Why a scene could not be loaded. Each message is one line naming the file.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    /// The file does not exist.
-    #[error("{}: file not found", path.display())]
-    NotFound {
-        /// The path as given.
-        path: PathBuf,
-    },
-    /// The file exists but could not be read.
-    #[error("{}: cannot read the file: {source}", path.display())]
-    Unreadable {
-        /// The path as given.
-        path: PathBuf,
-        /// The operating system's reason.
-        source: std::io::Error,
-    },
+    /// The file is missing, not a regular file, unreadable or too large for memory.
+    #[error(transparent)]
+    Input(#[from] crate::input::InputError),
     /// A line of the file is not valid OBJ (or not something this loader accepts).
     #[error("{file}:{line}: {problem}")]
     Malformed {
@@ -128,13 +117,7 @@ impl Mesh {
     /// face index zero or out of range, face with fewer than 3 vertices), a coordinate is NaN
     /// or infinite, or the file has no face.
     pub fn load(path: &Path) -> Result<Mesh, SceneError> {
-        let bytes = std::fs::read(path).map_err(|source| {
-            if source.kind() == std::io::ErrorKind::NotFound {
-                SceneError::NotFound { path: path.to_path_buf() }
-            } else {
-                SceneError::Unreadable { path: path.to_path_buf(), source }
-            }
-        })?;
+        let bytes = crate::input::read_file(path)?;
         // Tolerate stray non-UTF-8 bytes (comments in Latin-1 are common); a number spoilt by
         // one is reported as a bad number on its line.
         let text = String::from_utf8_lossy(&bytes);
