@@ -268,6 +268,8 @@ fn stats_json_has_exactly_the_documented_keys() {
         "threads",
         "trace_ms",
         "triangles",
+        "wall_ms",
+        "write_ms",
     ];
     assert_eq!(keys, expected);
     assert_eq!(v["triangles"], 2);
@@ -275,9 +277,15 @@ fn stats_json_has_exactly_the_documented_keys() {
     assert_eq!(v["threads"], 2);
     assert_eq!(v["backend"], "la-mt");
     assert_eq!(v["precision"], "f64");
-    for k in ["load_ms", "build_ms", "trace_ms", "mrays_per_s"] {
+    for k in ["load_ms", "build_ms", "trace_ms", "write_ms", "wall_ms", "mrays_per_s"] {
         assert!(v[k].as_f64().unwrap() >= 0.0, "{k}");
     }
+    // The wall time is the whole run's: at least the phases it contains.
+    let phases: f64 = ["load_ms", "build_ms", "trace_ms", "write_ms"]
+        .iter()
+        .map(|k| v[k].as_f64().unwrap())
+        .sum();
+    assert!(v["wall_ms"].as_f64().unwrap() >= phases, "{v}");
 }
 
 /// Rays from `(x, y, 0)` along `(0, 0, 2)` at the square: `t = 2` in units of the direction.
@@ -374,9 +382,10 @@ fn bad_render_inputs_fail_with_one_line_and_leave_nothing() {
         (vec![&malformed, &out, &"8", &"8"], "bad.obj:4"),
         (vec![&empty, &out, &"8", &"8"], "no faces"),
         (vec![&nan, &out, &"8", &"8"], "nan.obj:2"),
-        (vec![&good, &out, &"0", &"8"], "at least 1"),
-        (vec![&good, &out, &"8", &"0"], "at least 1"),
-        (vec![&good, &out, &"100000", &"100000"], "too large"),
+        // Sides are checked by the parser now (usage errors): the message gives the range.
+        (vec![&good, &out, &"0", &"8"], "not in 1..=65535"),
+        (vec![&good, &out, &"8", &"0"], "not in 1..=65535"),
+        (vec![&good, &out, &"100000", &"100000"], "not in 1..=65535"),
         (vec![&good, &gif, &"8", &"8"], "unknown output format"),
         (vec![&good, &bare, &"8", &"8"], "unknown output format"),
         (vec![&good, &"/nonexistent/dir/x.png", &"8", &"8"], "/nonexistent/dir/x.png"),
