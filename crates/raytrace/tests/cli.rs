@@ -498,3 +498,65 @@ fn report_star_is_upright_and_symmetric() {
         .count();
     assert!(asymmetric <= 4, "{asymmetric} pixels differ from their mirror image");
 }
+
+#[test]
+fn each_program_names_itself() {
+    let version = |out: Output| ok(&out);
+    assert_eq!(
+        version(raycast(&[&"--version"])),
+        format!("raycast {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    assert_eq!(
+        version(raytrace(&[&"--version"])),
+        format!("raytrace {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    let cast = ok(&raycast(&[&"-h"]));
+    assert!(cast.starts_with("Trace your own rays"), "{cast}");
+    assert!(cast.contains("Usage: raycast "), "{cast}");
+    let trace = ok(&raytrace(&[&"-h"]));
+    assert!(trace.starts_with("Render a triangle mesh"), "{trace}");
+    assert!(trace.contains("Usage: raytrace "), "{trace}");
+}
+
+#[test]
+fn a_name_at_the_file_system_limit_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    // 255 bytes, Linux's NAME_MAX: the temporary file's name must still fit.
+    let name = format!("{}.png", "n".repeat(251));
+    let out = raytrace(&[&obj, &dir.path().join(&name), &"8", &"8", &"-q"]);
+    assert_eq!(ok(&out), "");
+    assert_eq!(names(dir.path()), [name, "square.obj".to_owned()]);
+}
+
+#[test]
+fn threads_zero_is_one_per_core_and_nothing_is_drawn_off_a_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let stats = dir.path().join("s.json");
+    let out = raytrace(&[
+        &obj,
+        &dir.path().join("a.npy"),
+        &"8",
+        &"8",
+        &"--threads",
+        &"0",
+        &"--stats",
+        &stats,
+    ]);
+    ok(&out);
+    assert!(
+        out.stderr.is_empty(),
+        "progress on a pipe: {:?}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+    let cores = std::thread::available_parallelism().unwrap().get();
+    assert_eq!(v["threads"], cores);
+    // The earlier stats file is replaced; so is the image.
+    let out = raytrace(&[&obj, &dir.path().join("a.npy"), &"4", &"2", &"--stats", &stats]);
+    assert!(ok(&out).contains("8 rays"));
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+    assert_eq!(v["rays"], 8);
+    assert_eq!(names(dir.path()), ["a.npy", "s.json", "square.obj"]);
+}
