@@ -255,6 +255,7 @@ pub fn start_run(
     outputs: &[Named<'_>],
     stats: Option<&Path>,
 ) -> anyhow::Result<()> {
+    paths::check_output_names(outputs)?;
     if let Some(stats) = stats {
         paths::check_stats_path(stats)?;
     }

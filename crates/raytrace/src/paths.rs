@@ -1,5 +1,6 @@
 //! The rules for the files a run names, checked before any work (before the mesh is loaded):
 //!
+//! - No output path may end in a path separator (it names a directory).
 //! - No output may be the same file as an input or as another output. "The same file" is the
 //!   same device and inode when the path exists (so a symbolic link or a second hard link to
 //!   the input is caught), else the same canonical directory and name.
@@ -66,6 +67,27 @@ pub struct Named<'a> {
     pub role: &'static str,
     /// The path as given.
     pub path: &'a Path,
+}
+
+/// Checks that no output path ends in a path separator (`out.png/` names a directory, and
+/// would fail only when the finished output is renamed).
+///
+/// # Errors
+///
+/// [`UsageError`] naming the path.
+pub fn check_output_names(outputs: &[Named<'_>]) -> anyhow::Result<()> {
+    for out in outputs {
+        let text = out.path.as_os_str().to_string_lossy();
+        if text.ends_with(std::path::is_separator) {
+            return Err(UsageError(format!(
+                "{}: ends in a path separator, so it names a directory, not the {} file",
+                out.path.display(),
+                out.role
+            ))
+            .into());
+        }
+    }
+    Ok(())
 }
 
 /// Checks every output against the inputs and the other outputs, and that an output which
@@ -168,6 +190,10 @@ mod tests {
         let e = check_outputs(&inputs, &[named("hits", &a), named("stats", &a2)]).unwrap_err();
         assert!(e.to_string().contains("the stats would overwrite the hits"), "{e}");
         assert!(check_outputs(&inputs, &[named("hits", &a)]).is_ok());
+        assert!(check_output_names(&[named("hits", &a)]).is_ok());
+        let slash = PathBuf::from("new.npy/");
+        let e = check_output_names(&[named("hits", &a), named("stats", &slash)]).unwrap_err();
+        assert!(e.to_string().starts_with("new.npy/: ends in a path separator"), "{e}");
         let e = check_outputs(&inputs, &[named("image", dir.path())]).unwrap_err();
         assert!(e.downcast_ref::<UsageError>().is_none());
         assert!(e.to_string().contains("is a directory"), "{e}");

@@ -105,6 +105,8 @@ fn table() -> Vec<Row> {
         row(Raytrace, &["square.obj", "fifo.png", "8", "8"], 1, &["fifo.png: is a FIFO"]),
         row(Raytrace, &["square.obj", "nodir/o.png", "8", "8"], 1, &["nodir/o.png: cannot write"]),
         row(Raytrace, &["square.obj", "o.gif", "8", "8"], 2, &["o.gif: unknown output format"]),
+        row(Raytrace, &["square.obj", "new.png/", "8", "8"], 2, &["new.png/: ends in a path"]),
+        row(Raycast, &["square.obj", "rays.npy", "h.npy", "--stats", "s.json/"], 2, &["s.json/"]),
         row(Raytrace, &["square.obj", "square.obj", "8", "8"], 2, &["square.obj: unknown output"]),
         row(
             Raytrace,
