@@ -22,16 +22,24 @@
 
 #![deny(missing_docs)]
 
+pub mod args;
+pub mod paths;
+pub mod progress;
 pub mod scenes;
+pub mod signals;
 
 use std::path::Path;
+use std::process::ExitCode;
 use std::time::Duration;
 
 use anyhow::Context as _;
 use ga_tracer::{Ga, GaPlucker, GaReport};
 use intersect::Intersector;
 use la_tracer::{MollerTrumbore, Watertight};
-use render::output::AtomicFile;
+use render::output::{AtomicFile, Written};
+
+pub use args::{clap_exit, parse_vec3};
+pub use paths::{Named, UsageError};
 
 /// The ray-triangle back ends a program can use (`--backend`).
 ///
@@ -106,6 +114,22 @@ where
     if second { job.run(b) } else { job.run(a) }
 }
 
+/// How long each part of a run took.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Timings {
+    /// Reading and parsing the mesh.
+    pub load: Duration,
+    /// Building the BVH and preparing the triangles for the back end.
+    pub build: Duration,
+    /// Tracing every ray.
+    pub trace: Duration,
+    /// Encoding and writing the image or hits (into the temporary file).
+    pub write: Duration,
+    /// The whole run, from the program's start to the stats being written: the phases
+    /// above, and also the checks, the thread pool's start, reading the rays.
+    pub wall: Duration,
+}
+
 /// The figures both programs print and write with `--stats` (the JSON keys are the field
 /// names).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
@@ -120,6 +144,10 @@ pub struct Stats {
     pub build_ms: f64,
     /// Time to trace every ray.
     pub trace_ms: f64,
+    /// Time to encode and write the image or hits.
+    pub write_ms: f64,
+    /// Wall time of the whole run (see [`Timings::wall`]).
+    pub wall_ms: f64,
     /// Rays per second during tracing, in millions.
     pub mrays_per_s: f64,
     /// The back end's name (`la`, `la-mt`, ...).
@@ -134,24 +162,23 @@ impl Stats {
     /// Figures from the measured durations; `mrays_per_s` is `rays / trace`, with the trace
     /// time counted as at least a nanosecond so that it stays finite.
     #[must_use]
-    #[allow(clippy::too_many_arguments)]
     pub fn new(
         triangles: usize,
         rays: u64,
-        load: Duration,
-        build: Duration,
-        trace: Duration,
+        time: Timings,
         backend: &str,
         precision: Precision,
         threads: usize,
     ) -> Self {
-        let secs = trace.as_secs_f64().max(1e-9);
+        let secs = time.trace.as_secs_f64().max(1e-9);
         Self {
             triangles,
             rays,
-            load_ms: ms(load),
-            build_ms: ms(build),
-            trace_ms: ms(trace),
+            load_ms: ms(time.load),
+            build_ms: ms(time.build),
+            trace_ms: ms(time.trace),
+            write_ms: ms(time.write),
+            wall_ms: ms(time.wall),
             mrays_per_s: rays as f64 / secs / 1e6,
             backend: backend.to_owned(),
             precision: precision.name().to_owned(),
@@ -163,12 +190,14 @@ impl Stats {
     #[must_use]
     pub fn summary(&self) -> String {
         format!(
-            "{} triangles, load {:.1} ms, BVH build {:.1} ms, trace {:.1} ms, {} rays, \
-             {:.2} Mrays/s ({} {}, {} threads)",
+            "{} triangles, load {:.1} ms, BVH build {:.1} ms, trace {:.1} ms, write {:.1} ms, \
+             total {:.1} ms, {} rays, {:.2} Mrays/s ({} {}, {} threads)",
             self.triangles,
             self.load_ms,
             self.build_ms,
             self.trace_ms,
+            self.write_ms,
+            self.wall_ms,
             self.rays,
             self.mrays_per_s,
             self.backend,
@@ -178,17 +207,16 @@ impl Stats {
     }
 
     /// Writes the figures as pretty-printed JSON into `file` (created earlier, so that an
-    /// unwritable path fails before the work).
+    /// unwritable path fails before the work), to be committed with the run's other outputs.
     ///
     /// # Errors
     ///
     /// If writing fails.
-    pub fn write_json(&self, file: AtomicFile) -> anyhow::Result<()> {
-        file.commit(|w| {
+    pub fn write_json(&self, file: AtomicFile) -> anyhow::Result<Written> {
+        Ok(file.write(|w| {
             serde_json::to_writer_pretty(&mut *w, self).map_err(std::io::Error::other)?;
             std::io::Write::write_all(w, b"\n")
-        })?;
-        Ok(())
+        })?)
     }
 }
 
@@ -215,21 +243,24 @@ pub fn error_line(e: &anyhow::Error) -> String {
     line.replace(['\n', '\r'], " ")
 }
 
-/// Parses `X,Y,Z` into three finite numbers (for `--eye`, `--look-at`, `--up`).
+/// Checks the files a run names before any work (see [`paths`]): the `--stats` path, then
+/// every output against the inputs and the other outputs; then starts removing the outputs'
+/// temporary files on SIGINT and SIGTERM ([`signals`]). `outputs` includes the stats file.
 ///
 /// # Errors
 ///
-/// A message naming what is wrong.
-pub fn parse_vec3(text: &str) -> Result<[f64; 3], String> {
-    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
-    let [x, y, z] = parts[..] else {
-        return Err(format!("expected three comma-separated numbers X,Y,Z, got '{text}'"));
-    };
-    let num = |s: &str| match s.parse::<f64>() {
-        Ok(v) if v.is_finite() => Ok(v),
-        _ => Err(format!("'{s}' is not a finite number")),
-    };
-    Ok([num(x)?, num(y)?, num(z)?])
+/// [`UsageError`] or a data error from [`paths`]; an error if the signals cannot be handled.
+pub fn start_run(
+    inputs: &[Named<'_>],
+    outputs: &[Named<'_>],
+    stats: Option<&Path>,
+) -> anyhow::Result<()> {
+    paths::check_output_names(outputs)?;
+    if let Some(stats) = stats {
+        paths::check_stats_path(stats)?;
+    }
+    paths::check_outputs(inputs, outputs)?;
+    signals::remove_outputs_on_interrupt(outputs.first().map_or(Path::new("output"), |o| o.path))
 }
 
 /// Creates the `--stats` file early if one was asked for, with the file named in the error.
@@ -241,16 +272,33 @@ pub fn create_stats_file(path: Option<&Path>) -> anyhow::Result<Option<AtomicFil
     Ok(path.map(AtomicFile::create).transpose()?)
 }
 
-/// Builds the thread pool for `--threads` (0 or absent: one thread per core).
+/// Builds the thread pool for `threads` threads (see [`args::resolve_threads`]).
 ///
 /// # Errors
 ///
 /// If the operating system refuses the threads.
-pub fn thread_pool(threads: Option<usize>) -> anyhow::Result<rayon::ThreadPool> {
+pub fn thread_pool(threads: usize) -> anyhow::Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
+        .num_threads(threads)
         .build()
         .context("cannot start the worker threads")
+}
+
+/// The program's exit for the result of its run: success, or one `error:` line and status 2
+/// for a [`UsageError`], 1 for anything else.
+#[must_use]
+pub fn exit(result: anyhow::Result<()>) -> ExitCode {
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {}", error_line(&e));
+            if e.downcast_ref::<UsageError>().is_some() {
+                ExitCode::from(2)
+            } else {
+                ExitCode::FAILURE
+            }
+        }
+    }
 }
 
 /// Installs a panic hook that prints one `error:` line instead of a message and backtrace:
@@ -268,22 +316,6 @@ pub fn one_line_panics() {
     }));
 }
 
-/// Turns a clap error into the programs' exit: help and version go to stdout with status 0;
-/// usage errors print one `error:` line and give status 2.
-#[must_use]
-pub fn clap_exit(e: &clap::Error) -> std::process::ExitCode {
-    use clap::error::ErrorKind;
-    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
-        print!("{e}");
-        return std::process::ExitCode::SUCCESS;
-    }
-    let text = e.to_string();
-    let first = text.lines().next().unwrap_or("invalid arguments");
-    let first = first.strip_prefix("error: ").unwrap_or(first);
-    eprintln!("error: {first} (see --help)");
-    std::process::ExitCode::from(2)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -298,25 +330,11 @@ mod tests {
     }
 
     #[test]
-    fn vec3_parsing() {
-        assert_eq!(parse_vec3("1,-2.5, 3e1"), Ok([1.0, -2.5, 30.0]));
-        assert!(parse_vec3("1,2").unwrap_err().contains("three"));
-        assert!(parse_vec3("1,2,nan").unwrap_err().contains("'nan'"));
-        assert!(parse_vec3("1,2,x").is_err());
-    }
-
-    #[test]
     fn stats_figures_and_keys() {
-        let s = Stats::new(
-            10,
-            2_000_000,
-            Duration::from_millis(3),
-            Duration::from_millis(4),
-            Duration::from_millis(500),
-            "la",
-            Precision::F64,
-            2,
-        );
+        let ms = Duration::from_millis;
+        let time =
+            Timings { load: ms(3), build: ms(4), trace: ms(500), write: ms(6), wall: ms(520) };
+        let s = Stats::new(10, 2_000_000, time, "la", Precision::F64, 2);
         assert!((s.mrays_per_s - 4.0).abs() < 1e-12);
         let v = serde_json::to_value(&s).unwrap();
         let mut keys: Vec<&str> = v.as_object().unwrap().keys().map(String::as_str).collect();
@@ -332,20 +350,14 @@ mod tests {
                 "rays",
                 "threads",
                 "trace_ms",
-                "triangles"
+                "triangles",
+                "wall_ms",
+                "write_ms"
             ]
         );
         assert!(s.summary().starts_with("10 triangles, load 3.0 ms, BVH build 4.0 ms"));
-        let z = Stats::new(
-            1,
-            1,
-            Duration::ZERO,
-            Duration::ZERO,
-            Duration::ZERO,
-            "la",
-            Precision::F32,
-            1,
-        );
+        assert!(s.summary().contains("write 6.0 ms, total 520.0 ms"), "{}", s.summary());
+        let z = Stats::new(1, 1, Timings::default(), "la", Precision::F32, 1);
         assert!(z.mrays_per_s.is_finite());
     }
 

@@ -268,6 +268,8 @@ fn stats_json_has_exactly_the_documented_keys() {
         "threads",
         "trace_ms",
         "triangles",
+        "wall_ms",
+        "write_ms",
     ];
     assert_eq!(keys, expected);
     assert_eq!(v["triangles"], 2);
@@ -275,9 +277,15 @@ fn stats_json_has_exactly_the_documented_keys() {
     assert_eq!(v["threads"], 2);
     assert_eq!(v["backend"], "la-mt");
     assert_eq!(v["precision"], "f64");
-    for k in ["load_ms", "build_ms", "trace_ms", "mrays_per_s"] {
+    for k in ["load_ms", "build_ms", "trace_ms", "write_ms", "wall_ms", "mrays_per_s"] {
         assert!(v[k].as_f64().unwrap() >= 0.0, "{k}");
     }
+    // The wall time is the whole run's: at least the phases it contains.
+    let phases: f64 = ["load_ms", "build_ms", "trace_ms", "write_ms"]
+        .iter()
+        .map(|k| v[k].as_f64().unwrap())
+        .sum();
+    assert!(v["wall_ms"].as_f64().unwrap() >= phases, "{v}");
 }
 
 /// Rays from `(x, y, 0)` along `(0, 0, 2)` at the square: `t = 2` in units of the direction.
@@ -374,9 +382,10 @@ fn bad_render_inputs_fail_with_one_line_and_leave_nothing() {
         (vec![&malformed, &out, &"8", &"8"], "bad.obj:4"),
         (vec![&empty, &out, &"8", &"8"], "no faces"),
         (vec![&nan, &out, &"8", &"8"], "nan.obj:2"),
-        (vec![&good, &out, &"0", &"8"], "at least 1"),
-        (vec![&good, &out, &"8", &"0"], "at least 1"),
-        (vec![&good, &out, &"100000", &"100000"], "too large"),
+        // Sides are checked by the parser now (usage errors): the message gives the range.
+        (vec![&good, &out, &"0", &"8"], "not in 1..=65535"),
+        (vec![&good, &out, &"8", &"0"], "not in 1..=65535"),
+        (vec![&good, &out, &"100000", &"100000"], "not in 1..=65535"),
         (vec![&good, &gif, &"8", &"8"], "unknown output format"),
         (vec![&good, &bare, &"8", &"8"], "unknown output format"),
         (vec![&good, &"/nonexistent/dir/x.png", &"8", &"8"], "/nonexistent/dir/x.png"),
@@ -488,4 +497,66 @@ fn report_star_is_upright_and_symmetric() {
         .filter(|&(i, j)| hit(i, j) != hit(n - 1 - i, j))
         .count();
     assert!(asymmetric <= 4, "{asymmetric} pixels differ from their mirror image");
+}
+
+#[test]
+fn each_program_names_itself() {
+    let version = |out: Output| ok(&out);
+    assert_eq!(
+        version(raycast(&[&"--version"])),
+        format!("raycast {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    assert_eq!(
+        version(raytrace(&[&"--version"])),
+        format!("raytrace {}\n", env!("CARGO_PKG_VERSION"))
+    );
+    let cast = ok(&raycast(&[&"-h"]));
+    assert!(cast.starts_with("Trace your own rays"), "{cast}");
+    assert!(cast.contains("Usage: raycast "), "{cast}");
+    let trace = ok(&raytrace(&[&"-h"]));
+    assert!(trace.starts_with("Render a triangle mesh"), "{trace}");
+    assert!(trace.contains("Usage: raytrace "), "{trace}");
+}
+
+#[test]
+fn a_name_at_the_file_system_limit_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    // 255 bytes, Linux's NAME_MAX: the temporary file's name must still fit.
+    let name = format!("{}.png", "n".repeat(251));
+    let out = raytrace(&[&obj, &dir.path().join(&name), &"8", &"8", &"-q"]);
+    assert_eq!(ok(&out), "");
+    assert_eq!(names(dir.path()), [name, "square.obj".to_owned()]);
+}
+
+#[test]
+fn threads_zero_is_one_per_core_and_nothing_is_drawn_off_a_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let stats = dir.path().join("s.json");
+    let out = raytrace(&[
+        &obj,
+        &dir.path().join("a.npy"),
+        &"8",
+        &"8",
+        &"--threads",
+        &"0",
+        &"--stats",
+        &stats,
+    ]);
+    ok(&out);
+    assert!(
+        out.stderr.is_empty(),
+        "progress on a pipe: {:?}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+    let cores = std::thread::available_parallelism().unwrap().get();
+    assert_eq!(v["threads"], cores);
+    // The earlier stats file is replaced; so is the image.
+    let out = raytrace(&[&obj, &dir.path().join("a.npy"), &"4", &"2", &"--stats", &stats]);
+    assert!(ok(&out).contains("8 rays"));
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
+    assert_eq!(v["rays"], 8);
+    assert_eq!(names(dir.path()), ["a.npy", "s.json", "square.obj"]);
 }

@@ -12,11 +12,17 @@
 //!
 //! # Atomic writes
 //!
-//! [`AtomicFile`] writes into a temporary file (`.NAME.XXXXXX.tmp`) in the destination's own
-//! directory and renames it over the destination only when everything has been written, so
-//! a reader never sees half a file and a failed run leaves nothing behind (the temporary
-//! file is removed when the [`AtomicFile`] is dropped). Creating it first also proves the
-//! directory is writable: a program should create its outputs before doing the work.
+//! [`AtomicFile`] writes into a temporary file (`.NAME.XXXXXX.tmp`, `NAME` cut to 64 bytes so
+//! that any destination name fits) in the destination's own directory and renames it over the
+//! destination only when everything has been written, so a reader never sees half a file and
+//! a failed run leaves nothing behind (the temporary file is removed when the [`AtomicFile`]
+//! is dropped). Creating it first also proves the directory is writable: a program should
+//! create its outputs before doing the work.
+//!
+//! A program with several outputs writes each completely ([`AtomicFile::write`],
+//! [`ImageOutput::encode`]) and then renames them all with [`commit_all`]: a failure while
+//! writing any of them leaves none. Every live temporary file is listed for the process, so
+//! that a signal handler can remove them all before exiting ([`remove_temporaries_and_exit`]).
 //!
 //! ```
 //! use render::frame::{Frame, Mode};
@@ -36,6 +42,7 @@ pub mod npy;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 use image::ImageFormat;
 use image::codecs::jpeg::JpegEncoder;
@@ -133,12 +140,80 @@ fn reason(e: &io::Error) -> String {
     }
 }
 
-/// A file that appears at its path only when [`AtomicFile::commit`] succeeds (see the
+/// How many bytes of the destination's name the temporary file's name keeps: with the dot
+/// before it, the dot after, tempfile's six random characters and `.tmp`, a temporary name is
+/// at most 76 bytes, well inside any file system's name limit (255 on Linux) whatever the
+/// destination's name.
+const TEMP_NAME_BYTES: usize = 64;
+
+/// The temporary file's prefix for a destination named `name`: `.NAME.` with `NAME` cut to
+/// [`TEMP_NAME_BYTES`] on a character boundary.
+fn temp_prefix(name: &str) -> String {
+    let mut end = name.len().min(TEMP_NAME_BYTES);
+    while !name.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!(".{}.", &name[..end])
+}
+
+/// The temporary files of every [`AtomicFile`] and [`Written`] alive in the process, so that
+/// [`remove_temporaries_and_exit`] can remove them from a signal-handling thread. A path is
+/// added under the lock together with the file's creation and taken out under the lock
+/// together with its rename, so the list and the directory never disagree for another thread.
+static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn live() -> MutexGuard<'static, Vec<PathBuf>> {
+    LIVE.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// A temporary file's entry in [`LIVE`], taken out when dropped (after the file itself is
+/// removed: it is declared after the [`NamedTempFile`] that owns the file).
+#[derive(Debug)]
+struct Entry {
+    temp: PathBuf,
+    listed: bool,
+}
+
+impl Entry {
+    /// Takes the entry out of `list`, which the caller has locked.
+    fn unlist(&mut self, list: &mut Vec<PathBuf>) {
+        if let Some(i) = list.iter().position(|p| *p == self.temp) {
+            list.swap_remove(i);
+        }
+        self.listed = false;
+    }
+}
+
+impl Drop for Entry {
+    fn drop(&mut self) {
+        if self.listed {
+            let mut list = live();
+            self.unlist(&mut list);
+        }
+    }
+}
+
+/// Removes the temporary file of every [`AtomicFile`] and [`Written`] alive in the process,
+/// then exits with `code`: for a thread that handles SIGINT or SIGTERM. The list stays
+/// locked until the process has exited, so no other thread can create or commit a file
+/// meanwhile: an interrupted run leaves either no output at all or, when the signal came
+/// while [`commit_all`] was renaming, every output complete; never a temporary file.
+pub fn remove_temporaries_and_exit(code: i32) -> ! {
+    let list = live();
+    for temp in list.iter() {
+        // Already gone (dropped a moment ago) is as good as removed.
+        let _ = std::fs::remove_file(temp);
+    }
+    std::process::exit(code)
+}
+
+/// A file that appears at its path only when it is committed (see the
 /// [module documentation](self)).
 #[derive(Debug)]
 pub struct AtomicFile {
     path: PathBuf,
     temp: NamedTempFile,
+    entry: Entry,
 }
 
 impl AtomicFile {
@@ -153,23 +228,45 @@ impl AtomicFile {
             _ => Path::new("."),
         };
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let prefix = format!(".{name}.");
+        let prefix = temp_prefix(&name);
         let mut builder = tempfile::Builder::new();
         builder.prefix(&prefix).suffix(".tmp");
         // Temporary files are private (0600) by default; the result should get the usual
         // permissions of a new file (0666 less the umask).
         #[cfg(unix)]
         builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+        // Created and listed under one lock: a signal handler never misses a temporary.
+        let mut list = live();
         let temp = builder
             .tempfile_in(dir)
             .map_err(|error| OutputError::Create { path: path.to_path_buf(), error })?;
-        Ok(Self { path: path.to_path_buf(), temp })
+        list.push(temp.path().to_path_buf());
+        let entry = Entry { temp: temp.path().to_path_buf(), listed: true };
+        Ok(Self { path: path.to_path_buf(), temp, entry })
     }
 
     /// The destination path.
     #[must_use]
     pub fn path(&self) -> &Path {
         &self.path
+    }
+
+    /// Writes the contents with `write` and flushes them, without putting the file in place:
+    /// [`commit_all`] does that for several files at once.
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::Write`] if writing or flushing fails; the temporary file is removed.
+    pub fn write(
+        self,
+        write: impl FnOnce(&mut BufWriter<&File>) -> io::Result<()>,
+    ) -> Result<Written, OutputError> {
+        let fail = |error| OutputError::Write { path: self.path.clone(), error };
+        let mut w = BufWriter::new(self.temp.as_file());
+        write(&mut w).map_err(fail)?;
+        w.flush().map_err(fail)?;
+        drop(w);
+        Ok(Written { path: self.path, temp: self.temp, entry: self.entry })
     }
 
     /// Writes the contents with `write`, flushes them and renames the file into place,
@@ -183,25 +280,18 @@ impl AtomicFile {
         self,
         write: impl FnOnce(&mut BufWriter<&File>) -> io::Result<()>,
     ) -> Result<(), OutputError> {
-        let path = self.path;
-        let fail = |error| OutputError::Write { path: path.clone(), error };
-        let mut w = BufWriter::new(self.temp.as_file());
-        write(&mut w).map_err(fail)?;
-        w.flush().map_err(fail)?;
-        drop(w);
-        self.temp.persist(&path).map_err(|e| fail(e.error))?;
-        Ok(())
+        commit_all([self.write(write)?])
     }
 
-    /// Like [`AtomicFile::commit`] for writers whose error is not an [`io::Error`].
-    fn commit_with<E>(
+    /// Like [`AtomicFile::write`] for writers whose error is not an [`io::Error`].
+    fn write_with<E>(
         self,
         write: impl FnOnce(&mut BufWriter<&File>) -> Result<(), E>,
         wrap: impl FnOnce(PathBuf, E) -> OutputError,
-    ) -> Result<(), OutputError> {
+    ) -> Result<Written, OutputError> {
         let path = self.path.clone();
         let mut failure = None;
-        let result = self.commit(|w| {
+        let result = self.write(|w| {
             write(w).map_err(|e| {
                 failure = Some(e);
                 io::Error::other("encoding failed")
@@ -210,6 +300,73 @@ impl AtomicFile {
         match failure {
             Some(e) => Err(wrap(path, e)),
             None => result,
+        }
+    }
+}
+
+/// A temporary file written completely, waiting for [`commit_all`] (or [`Written::commit`])
+/// to put it in place; dropped, it is removed.
+#[derive(Debug)]
+pub struct Written {
+    path: PathBuf,
+    temp: NamedTempFile,
+    entry: Entry,
+}
+
+impl Written {
+    /// The destination path.
+    #[must_use]
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Renames the file into place, replacing any file already there.
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::Write`] if the rename fails; the temporary file is removed.
+    pub fn commit(self) -> Result<(), OutputError> {
+        commit_all([self])
+    }
+}
+
+/// Renames every written file into place, in order: the outputs of a run appear together.
+/// Write them all first ([`AtomicFile::write`]), so that a failure while writing leaves none.
+///
+/// A rename within a directory fails only in unusual cases (the destination became a
+/// directory meanwhile, the file system went read-only); if one does, the files renamed
+/// before it that did not exist before are removed again, and the rest are not renamed.
+///
+/// # Errors
+///
+/// [`OutputError::Write`] for the first rename that fails.
+pub fn commit_all(files: impl IntoIterator<Item = Written>) -> Result<(), OutputError> {
+    let mut files: Vec<Written> = files.into_iter().collect();
+    let mut list = live();
+    let mut done: Vec<(PathBuf, bool)> = Vec::new();
+    let mut failure = None;
+    for mut file in files.drain(..) {
+        // Unlisted under the lock we hold (its drop would take the lock again).
+        file.entry.unlist(&mut list);
+        if failure.is_some() {
+            // Dropped here: that removes the temporary file.
+            continue;
+        }
+        let existed = file.path.symlink_metadata().is_ok();
+        match file.temp.persist(&file.path) {
+            Ok(_) => done.push((file.path, existed)),
+            Err(e) => failure = Some(OutputError::Write { path: file.path, error: e.error }),
+        }
+    }
+    match failure {
+        None => Ok(()),
+        Some(e) => {
+            for (path, existed) in done {
+                if !existed {
+                    let _ = std::fs::remove_file(path);
+                }
+            }
+            Err(e)
         }
     }
 }
@@ -250,26 +407,35 @@ impl ImageOutput {
     ///
     /// [`OutputError`]: the image cannot be allocated, encoded or written.
     pub fn write(self, frame: &Frame) -> Result<(), OutputError> {
+        self.encode(frame)?.commit()
+    }
+
+    /// Encodes `frame` in the file's format into the temporary file, for [`commit_all`].
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError`]: the image cannot be allocated, encoded or written.
+    pub fn encode(self, frame: &Frame) -> Result<Written, OutputError> {
         let path = self.file.path().to_path_buf();
         let frame_error = |error| OutputError::Frame { path: path.clone(), error };
         let encode = |path, error| OutputError::Encode { path, error };
         match self.format {
             Format::Png => {
                 let img = frame.to_display().map_err(frame_error)?;
-                self.file.commit_with(|w| img.write_to(w, ImageFormat::Png), encode)
+                self.file.write_with(|w| img.write_to(w, ImageFormat::Png), encode)
             }
             Format::Jpeg => {
                 let img = frame.to_display().map_err(frame_error)?;
-                self.file.commit_with(
+                self.file.write_with(
                     |w| img.write_with_encoder(JpegEncoder::new_with_quality(w, JPEG_QUALITY)),
                     encode,
                 )
             }
             Format::Exr => {
                 let img = image::DynamicImage::from(frame.to_float().map_err(frame_error)?);
-                self.file.commit_with(|w| img.write_to(w, ImageFormat::OpenExr), encode)
+                self.file.write_with(|w| img.write_to(w, ImageFormat::OpenExr), encode)
             }
-            Format::Npy => self.file.commit(|w| write_npy(frame, w)),
+            Format::Npy => self.file.write(|w| write_npy(frame, w)),
         }
     }
 }
@@ -381,6 +547,59 @@ mod tests {
             .map(|c| f32::from_le_bytes(c.try_into().unwrap()))
             .collect();
         assert_eq!(data, vec![0.5, 0.25, 1.0, 0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn a_name_at_the_file_system_limit_still_gets_a_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        // 255 bytes is Linux's NAME_MAX; multi-byte characters test the cut's boundary.
+        let name = format!("{}é.npy", "a".repeat(249));
+        assert_eq!(name.len(), 255);
+        let path = dir.path().join(&name);
+        AtomicFile::create(&path).unwrap().commit(|w| w.write_all(b"x")).unwrap();
+        assert_eq!(files_in(dir.path()), [name]);
+        let prefix = temp_prefix(&format!("{}é", "a".repeat(63)));
+        assert_eq!(prefix, format!(".{}.", "a".repeat(63)), "cut before the 2-byte char");
+    }
+
+    #[test]
+    fn outputs_written_but_not_committed_leave_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.npy"), dir.path().join("b.json"));
+        let first = AtomicFile::create(&a).unwrap().write(|w| w.write_all(b"a")).unwrap();
+        let second = AtomicFile::create(&b).unwrap();
+        // Other tests run meanwhile: look for these two temporaries only.
+        let temps = [first.entry.temp.clone(), second.entry.temp.clone()];
+        let listed = |t: &PathBuf| live().contains(t);
+        assert!(temps.iter().all(listed), "both temporaries listed");
+        let e = second.write(|_| Err(io::Error::other("disk full"))).unwrap_err();
+        assert!(e.to_string().starts_with(&format!("{}: write failed", b.display())), "{e}");
+        drop(first);
+        assert!(files_in(dir.path()).is_empty());
+        assert!(!temps.iter().any(listed));
+        let first = AtomicFile::create(&a).unwrap().write(|w| w.write_all(b"a")).unwrap();
+        let second = AtomicFile::create(&b).unwrap().write(|w| w.write_all(b"b")).unwrap();
+        let temps = [first.entry.temp.clone(), second.entry.temp.clone()];
+        commit_all([first, second]).unwrap();
+        assert_eq!(files_in(dir.path()), ["a.npy", "b.json"]);
+        assert!(!temps.iter().any(listed));
+    }
+
+    #[test]
+    fn a_failed_rename_takes_back_the_new_files_before_it() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.npy"), dir.path().join("b.json"));
+        let first = AtomicFile::create(&a).unwrap().write(|w| w.write_all(b"a")).unwrap();
+        let second = AtomicFile::create(&b).unwrap().write(|w| w.write_all(b"b")).unwrap();
+        let temps = [first.entry.temp.clone(), second.entry.temp.clone()];
+        // A directory (not empty) appears where the second output goes: its rename fails.
+        std::fs::create_dir(&b).unwrap();
+        std::fs::write(b.join("keep"), b"k").unwrap();
+        let e = commit_all([first, second]).unwrap_err();
+        assert!(e.to_string().starts_with(&format!("{}: write failed", b.display())), "{e}");
+        assert_eq!(files_in(dir.path()), ["b.json"]);
+        assert_eq!(std::fs::read(b.join("keep")).unwrap(), b"k");
+        assert!(!temps.iter().any(|t| live().contains(t)));
     }
 
     #[cfg(unix)]

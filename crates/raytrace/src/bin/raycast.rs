@@ -6,14 +6,19 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use anyhow::{Context as _, bail};
+use anyhow::Context as _;
 use clap::Parser;
 use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;
-use raytrace::{Backend, Job, Precision, Stats, dispatch};
+use raytrace::args::{parse_threads, resolve_threads};
+use raytrace::progress::Progress;
+use raytrace::{Backend, Job, Named, Precision, Stats, Timings, UsageError, dispatch};
 use render::accel::Accel;
 use render::output::{AtomicFile, npy};
 use render::scene::Mesh;
+
+/// Rays traced between two updates of the progress bar.
+const RAYS_PER_BLOCK: usize = 4096;
 
 /// Trace your own rays through a triangle mesh (Wavefront OBJ).
 ///
@@ -28,13 +33,14 @@ use render::scene::Mesh;
 /// direction, is a miss. Triangle indices count the file's faces in order, each n-gon fanned
 /// into n - 2 triangles from its first vertex.
 #[derive(Parser, Debug)]
-#[command(version, about, long_about)]
+#[command(name = "raycast", version)]
 struct Cli {
     /// The mesh (.obj).
     input: PathBuf,
     /// The rays: .npy, float32 or float64, shape (N, 6).
     rays: PathBuf,
-    /// Where to write the hits: .npy, float64, shape (N, 4), or (N, 1) with --any-hit.
+    /// Where to write the hits: .npy, float64, shape (N, 4), or (N, 1) with --any-hit
+    /// (replaced if it exists; never the rays or the mesh).
     hits: PathBuf,
     /// Ray-triangle back end.
     #[arg(long, value_enum, default_value_t = Backend::La)]
@@ -45,59 +51,72 @@ struct Cli {
     /// Only ask whether each ray hits something (faster; HITS is (N, 1) of 1 or 0).
     #[arg(long)]
     any_hit: bool,
-    /// Worker threads [default: one per core].
-    #[arg(long, value_name = "N")]
+    /// Worker threads, at most 4 per core; 0 is one per core [default: one per core].
+    #[arg(long, value_name = "N", value_parser = parse_threads, allow_negative_numbers = true)]
     threads: Option<usize>,
-    /// Print nothing but errors.
+    /// Print nothing but errors (no progress, no summary).
     #[arg(long, short)]
     quiet: bool,
-    /// Also write the summary's figures to this JSON file.
+    /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
 }
 
 fn main() -> ExitCode {
+    let start = Instant::now();
     raytrace::one_line_panics();
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        Err(e) => return raytrace::clap_exit(&e),
-    };
-    match run(&cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {}", raytrace::error_line(&e));
-            ExitCode::FAILURE
-        }
+    match Cli::try_parse() {
+        Ok(cli) => raytrace::exit(run(&cli, start)),
+        Err(e) => raytrace::clap_exit(&e),
     }
 }
 
-fn run(cli: &Cli) -> anyhow::Result<()> {
+fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     if !has_npy_extension(&cli.hits) {
-        bail!("{}: the hits are written as NumPy arrays: use a .npy extension", cli.hits.display());
+        let hits = cli.hits.display();
+        let e = format!("{hits}: the hits are written as NumPy arrays: use a .npy extension");
+        return Err(UsageError(e).into());
     }
+    let stats_path = cli.stats.as_deref();
+    let inputs =
+        [Named { role: "mesh", path: &cli.input }, Named { role: "rays", path: &cli.rays }];
+    let mut outputs = vec![Named { role: "hits", path: &cli.hits }];
+    outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
+    raytrace::start_run(&inputs, &outputs, stats_path)?;
     let hits_file = AtomicFile::create(&cli.hits)?;
-    let stats_file = raytrace::create_stats_file(cli.stats.as_deref())?;
-    let pool = raytrace::thread_pool(cli.threads)?;
+    let stats_file = raytrace::create_stats_file(stats_path)?;
+    let threads = resolve_threads(cli.threads);
+    let pool = raytrace::thread_pool(threads)?;
 
+    let progress = Progress::new(cli.quiet);
+    progress.phase(format!("reading {}", cli.rays.display()));
     let bytes = render::input::read_file(&cli.rays)?;
     let rays = npy::read_f64_matrix(&bytes, 6).with_context(|| cli.rays.display().to_string())?;
     drop(bytes);
 
-    let start = Instant::now();
+    progress.phase(format!("loading {}", cli.input.display()));
+    let t = Instant::now();
     let mesh = Mesh::load(&cli.input)?;
-    let load = start.elapsed();
+    let load = t.elapsed();
 
-    let job = CastJob { mesh: &mesh, rays: &rays.values, any_hit: cli.any_hit };
+    let job =
+        CastJob { mesh: &mesh, rays: &rays.values, any_hit: cli.any_hit, progress: &progress };
     let (name, hits, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
 
+    progress.phase(format!("writing {}", cli.hits.display()));
+    let t = Instant::now();
     let columns = if cli.any_hit { 1 } else { 4 };
-    hits_file.commit(|w| npy::write(w, &[rays.rows, columns], hits.iter().copied()))?;
-    let threads = pool.current_num_threads();
+    let hits = hits_file.write(|w| npy::write(w, &[rays.rows, columns], hits.iter().copied()))?;
+    let write = t.elapsed();
+    let time = Timings { load, build, trace, write, wall: start.elapsed() };
     let n = rays.rows as u64;
-    let stats = Stats::new(mesh.len(), n, load, build, trace, name, cli.precision, threads);
+    let stats = Stats::new(mesh.len(), n, time, name, cli.precision, threads);
+    let mut written = vec![hits];
     if let Some(file) = stats_file {
-        stats.write_json(file)?;
+        written.push(stats.write_json(file)?);
     }
+    render::output::commit_all(written)?;
+    progress.finish();
     if !cli.quiet {
         println!("{}: {} -> {}", cli.input.display(), stats.summary(), cli.hits.display());
     }
@@ -114,6 +133,7 @@ struct CastJob<'a> {
     /// Six values per ray.
     rays: &'a [f64],
     any_hit: bool,
+    progress: &'a Progress,
 }
 
 impl Job for CastJob<'_> {
@@ -121,9 +141,11 @@ impl Job for CastJob<'_> {
     type Output = (&'static str, Vec<f64>, Duration, Duration);
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
+        self.progress.phase("building the BVH");
         let start = Instant::now();
         let accel = Accel::from_mesh(intersector, self.mesh);
         let build = start.elapsed();
+        self.progress.trace((self.rays.len() / 6) as u64);
         let start = Instant::now();
         let ray = |r: &[f64]| {
             let ray: Ray<I::Real> = Ray::new([r[0], r[1], r[2]], [r[3], r[4], r[5]]).cast();
@@ -131,21 +153,27 @@ impl Job for CastJob<'_> {
             let finite = ray.origin.iter().chain(&ray.dir).all(|x| x.is_finite());
             (finite && ray.dir != [<I::Real as Real>::ZERO; 3]).then_some(ray)
         };
-        let hits: Vec<f64> = if self.any_hit {
-            let inf = <I::Real as Real>::INFINITY;
-            self.rays
-                .par_chunks_exact(6)
-                .map(|r| ray(r).map_or(0.0, |ray| f64::from(u8::from(accel.any_hit(&ray, inf)))))
-                .collect()
-        } else {
-            self.rays
-                .par_chunks_exact(6)
-                .flat_map_iter(|r| match ray(r).and_then(|ray| accel.closest_hit(&ray)) {
-                    Some(h) => [h.t.to_f64(), f64::from(h.prim), h.u.to_f64(), h.v.to_f64()],
-                    None => [f64::INFINITY, -1.0, f64::NAN, f64::NAN],
-                })
-                .collect()
-        };
+        let columns = if self.any_hit { 1 } else { 4 };
+        let mut hits = vec![0.0; self.rays.len() / 6 * columns];
+        // In blocks, each writing its own rows of the hits, so that the bar can count them.
+        let blocks = self.rays.par_chunks(6 * RAYS_PER_BLOCK);
+        blocks.zip(hits.par_chunks_mut(columns * RAYS_PER_BLOCK)).for_each(|(rays, out)| {
+            let rays = rays.chunks_exact(6);
+            if self.any_hit {
+                let inf = <I::Real as Real>::INFINITY;
+                for (r, h) in rays.zip(out.iter_mut()) {
+                    *h = ray(r).map_or(0.0, |ray| f64::from(u8::from(accel.any_hit(&ray, inf))));
+                }
+            } else {
+                for (r, h) in rays.zip(out.chunks_exact_mut(4)) {
+                    h.copy_from_slice(&match ray(r).and_then(|ray| accel.closest_hit(&ray)) {
+                        Some(h) => [h.t.to_f64(), f64::from(h.prim), h.u.to_f64(), h.v.to_f64()],
+                        None => [f64::INFINITY, -1.0, f64::NAN, f64::NAN],
+                    });
+                }
+            }
+            self.progress.inc((out.len() / columns) as u64);
+        });
         (I::NAME, hits, build, start.elapsed())
     }
 }

@@ -2,20 +2,20 @@
 //!
 //! The report's four arguments are kept; everything else is an option. See `--help`.
 
-use std::io::IsTerminal as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::Context as _;
 use clap::{Parser, ValueEnum};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use intersect::Intersector;
-use raytrace::{Backend, Job, Precision, Stats, dispatch};
+use raytrace::args::{parse_fov, parse_threads, resolve_threads};
+use raytrace::progress::Progress;
+use raytrace::{Backend, Job, Named, Precision, Stats, Timings, UsageError, dispatch};
 use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
-use render::frame::{Frame, Mode};
-use render::output::ImageOutput;
+use render::frame::{Frame, MAX_SIDE, Mode};
+use render::output::{Format, ImageOutput};
 use render::scene::Mesh;
 
 /// Render a triangle mesh (Wavefront OBJ) to an image, one ray per pixel.
@@ -23,15 +23,17 @@ use render::scene::Mesh;
 /// The output format follows OUTPUT's extension: .png, .jpg/.jpeg (8-bit), .exr (32-bit
 /// float) or .npy (the mode's raw values).
 #[derive(Parser, Debug)]
-#[command(version, about)]
+#[command(name = "raytrace", version)]
 struct Cli {
     /// The mesh to render (.obj).
     input: PathBuf,
-    /// The image to write: .png, .jpg, .jpeg, .exr or .npy.
+    /// The image to write: .png, .jpg, .jpeg, .exr or .npy (replaced if it exists).
     output: PathBuf,
-    /// Image width in pixels.
+    /// Image width in pixels (1 to 65535).
+    #[arg(value_parser = side(), allow_negative_numbers = true)]
     width: u32,
-    /// Image height in pixels.
+    /// Image height in pixels (1 to 65535).
+    #[arg(value_parser = side(), allow_negative_numbers = true)]
     height: u32,
     /// Ray-triangle back end.
     #[arg(long, value_enum, default_value_t = Backend::La)]
@@ -57,18 +59,24 @@ struct Cli {
     /// Up direction X,Y,Z [default: 0,1,0].
     #[arg(long, value_name = "X,Y,Z", value_parser = raytrace::parse_vec3, allow_hyphen_values = true)]
     up: Option<[f64; 3]>,
-    /// Vertical field of view in degrees.
-    #[arg(long, value_name = "DEG", default_value_t = DEFAULT_FOV_DEG)]
+    /// Vertical field of view in degrees, between 0 and 180.
+    #[arg(long, value_name = "DEG", default_value_t = DEFAULT_FOV_DEG, value_parser = parse_fov,
+        allow_negative_numbers = true)]
     fov: f64,
-    /// Worker threads [default: one per core].
-    #[arg(long, value_name = "N")]
+    /// Worker threads, at most 4 per core; 0 is one per core [default: one per core].
+    #[arg(long, value_name = "N", value_parser = parse_threads, allow_negative_numbers = true)]
     threads: Option<usize>,
-    /// Print nothing but errors (no progress bar, no summary).
+    /// Print nothing but errors (no progress, no summary).
     #[arg(long, short)]
     quiet: bool,
-    /// Also write the summary's figures to this JSON file.
+    /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
+}
+
+/// The parser for a side of the image: 1 to [`MAX_SIDE`] pixels.
+fn side() -> clap::builder::RangedI64ValueParser<u32> {
+    clap::value_parser!(u32).range(1..=i64::from(MAX_SIDE))
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -99,46 +107,52 @@ enum CameraArg {
 }
 
 fn main() -> ExitCode {
+    let start = Instant::now();
     raytrace::one_line_panics();
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        Err(e) => return raytrace::clap_exit(&e),
-    };
-    match run(&cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {}", raytrace::error_line(&e));
-            ExitCode::FAILURE
-        }
+    match Cli::try_parse() {
+        Ok(cli) => raytrace::exit(run(&cli, start)),
+        Err(e) => raytrace::clap_exit(&e),
     }
 }
 
-fn run(cli: &Cli) -> anyhow::Result<()> {
+fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     // Everything that can be checked without the mesh is checked before loading it, and the
     // output files are created (empty, temporary) before the work, so that a bad path fails
     // in a moment rather than after the render.
+    Format::from_path(&cli.output).map_err(|e| UsageError(e.to_string()))?;
+    let stats_path = cli.stats.as_deref();
+    let mut outputs = vec![Named { role: "image", path: &cli.output }];
+    outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
+    raytrace::start_run(&[Named { role: "mesh", path: &cli.input }], &outputs, stats_path)?;
     let output = ImageOutput::create(&cli.output)?;
-    let stats_file = raytrace::create_stats_file(cli.stats.as_deref())?;
+    let stats_file = raytrace::create_stats_file(stats_path)?;
     let mut frame = Frame::new(cli.mode.into(), cli.width, cli.height)?;
-    let pool = raytrace::thread_pool(cli.threads)?;
+    let threads = resolve_threads(cli.threads);
+    let pool = raytrace::thread_pool(threads)?;
 
-    let start = Instant::now();
+    let progress = Progress::new(cli.quiet);
+    progress.phase(format!("loading {}", cli.input.display()));
+    let t = Instant::now();
     let mesh = Mesh::load(&cli.input)?;
-    let load = start.elapsed();
+    let load = t.elapsed();
     let camera = camera(cli, &mesh)?;
 
-    let bar = progress_bar(cli, u64::from(cli.width) * u64::from(cli.height));
-    let job = RenderJob { mesh: &mesh, camera: &camera, frame: &mut frame, bar: &bar };
+    let job = RenderJob { mesh: &mesh, camera: &camera, frame: &mut frame, progress: &progress };
     let (name, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
-    bar.finish_and_clear();
 
-    output.write(&frame)?;
+    progress.phase(format!("writing {}", cli.output.display()));
+    let t = Instant::now();
+    let image = output.encode(&frame)?;
+    let write = t.elapsed();
     let rays = u64::from(cli.width) * u64::from(cli.height);
-    let threads = pool.current_num_threads();
-    let stats = Stats::new(mesh.len(), rays, load, build, trace, name, cli.precision, threads);
+    let time = Timings { load, build, trace, write, wall: start.elapsed() };
+    let stats = Stats::new(mesh.len(), rays, time, name, cli.precision, threads);
+    let mut written = vec![image];
     if let Some(file) = stats_file {
-        stats.write_json(file)?;
+        written.push(stats.write_json(file)?);
     }
+    render::output::commit_all(written)?;
+    progress.finish();
     if !cli.quiet {
         println!("{}: {} -> {}", cli.input.display(), stats.summary(), cli.output.display());
     }
@@ -162,23 +176,12 @@ fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<Camera> {
     Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")
 }
 
-fn progress_bar(cli: &Cli, pixels: u64) -> ProgressBar {
-    let bar = ProgressBar::with_draw_target(Some(pixels), ProgressDrawTarget::hidden());
-    if !cli.quiet && std::io::stderr().is_terminal() {
-        let style = ProgressStyle::with_template("{bar:40} {percent:>3}% {elapsed} (eta {eta})")
-            .expect("the template is valid");
-        bar.set_style(style);
-        bar.set_draw_target(ProgressDrawTarget::stderr());
-    }
-    bar
-}
-
 /// Builds the acceleration structure and renders: the part compiled once per back end.
 struct RenderJob<'a> {
     mesh: &'a Mesh,
     camera: &'a Camera,
     frame: &'a mut Frame,
-    bar: &'a ProgressBar,
+    progress: &'a Progress,
 }
 
 impl Job for RenderJob<'_> {
@@ -186,12 +189,14 @@ impl Job for RenderJob<'_> {
     type Output = (&'static str, std::time::Duration, std::time::Duration);
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
+        self.progress.phase("building the BVH");
         let start = Instant::now();
         let accel = Accel::from_mesh(intersector, self.mesh);
         let build = start.elapsed();
+        self.progress.trace(u64::from(self.frame.width()) * u64::from(self.frame.height()));
         let start = Instant::now();
         render::render::render(&accel, self.mesh, self.camera, self.frame, &|n| {
-            self.bar.inc(n as u64);
+            self.progress.inc(n as u64);
         });
         (I::NAME, build, start.elapsed())
     }
