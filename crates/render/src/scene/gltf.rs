@@ -131,6 +131,22 @@ fn one_line(text: &str) -> String {
 fn document(json: &[u8]) -> Result<gltf::Document, String> {
     use gltf::json::validation::{Error, Validate as _};
     let root = gltf::json::Root::from_slice(json).map_err(|e| one_line(&e.to_string()))?;
+    // The crate's validation indexes the accessors with each POSITION attribute unchecked
+    // (gltf-json 1.4.1 panics on one out of range): check those first.
+    let position = gltf::json::validation::Checked::Valid(gltf::json::mesh::Semantic::Positions);
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            if let Some(i) = primitive.attributes.get(&position) {
+                if i.value() >= root.accessors.len() {
+                    return Err(format!(
+                        "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} \
+                         does not exist",
+                        i.value()
+                    ));
+                }
+            }
+        }
+    }
     let mut errors = Vec::new();
     root.validate(&root, gltf::json::Path::new, &mut |path, error| errors.push((path(), error)));
     errors.retain(|(path, error)| {
