@@ -338,3 +338,24 @@ fn coordinates_beyond_a_limit_are_found_among_used_vertices() {
     let small = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e39 0 0\nf 1 2 3\n", "s.obj");
     assert_eq!(small.unwrap().first_coordinate_beyond(limit), None);
 }
+
+#[test]
+fn a_mesh_too_large_for_memory_is_refused_before_reading() {
+    if render::scene::memory::available().is_none() {
+        return; // no MemAvailable on this system: nothing is refused up front
+    }
+    // A sparse 4 TB file: no disk space used, and far beyond any machine's memory.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.obj");
+    let file = std::fs::File::create(&path).unwrap();
+    if file.set_len(1 << 42).is_err() {
+        return; // the file system cannot hold such a file, even sparse
+    }
+    let start = std::time::Instant::now();
+    let msg = Mesh::load(&path).unwrap_err().to_string();
+    let prefix = format!("{}: too large for memory: needs about ", path.display());
+    assert!(msg.starts_with(&prefix), "{msg}");
+    assert!(msg.ends_with(" GB available") && !msg.contains('\n'), "{msg}");
+    // Refused from the size alone: reading 4 TB would take hours.
+    assert!(start.elapsed().as_secs() < 10);
+}

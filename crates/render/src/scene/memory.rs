@@ -12,24 +12,29 @@
 
 use super::{MeshFormat, SceneError};
 
-/// Peak bytes per triangle of loading a mesh and rendering it, beyond the file's own bytes
-/// (measured on the subdivided bunny; see the README's "Loading" section).
-pub const PEAK_BYTES_PER_TRIANGLE: u64 = 400;
+/// Peak bytes per triangle of loading a mesh and rendering it, beyond the file's own bytes:
+/// the mesh (positions and indices), the BVH and a back end's prepared triangles, which
+/// dominate. Measured with `raytrace` on subdivided bunnies (the README's "Loading" section)
+/// and rounded up.
+pub const PEAK_BYTES_PER_TRIANGLE: u64 = 200;
 
 /// [`Mesh::from_bytes`](super::Mesh::from_bytes) allocates at most this many times the
-/// input's size (plus a constant): the densest input, a binary PLY face list of one-byte
-/// indices, gives a 12-byte triangle and a 36-byte corner-normal triple per input byte, and
-/// the parser's intermediate copies stay below the same total.
+/// input's size (plus a constant). The densest inputs give about one triangle per input
+/// byte: a binary PLY polygon of one-byte indices (a 12-byte triangle, a 36-byte corner
+/// normal triple and 4 bytes of the parsed face per byte), an OBJ `f` line of `1 1 1 ...`
+/// (one triangle per 2 bytes); glTF output is capped at half this multiple (instancing).
 pub const FROM_BYTES_MULTIPLE: u64 = 200;
 
 /// Least bytes per triangle of a typical file of the format, for estimates from a file size.
-/// A closed mesh has about half a vertex per triangle: OBJ, ~25 bytes per `v` line and ~20
-/// per `f` line; binary PLY with float coordinates and int indices, 12 bytes per vertex and
-/// 13 per face; binary STL, 50 per facet; glTF with float positions and 16-bit indices, 6 + 6.
+/// A closed mesh has about half a vertex per triangle. OBJ: a `v` line of full-precision
+/// coordinates takes ~40 bytes and an `f` line ~25, so ~45 per triangle; 40 leaves room for
+/// shorter numbers. Binary PLY with float coordinates and int indices: 12 bytes per vertex
+/// and 13 per face, 19. Binary STL: 50 per facet. glTF with float positions and 16-bit
+/// indices: 6 + 6.
 #[must_use]
 pub fn bytes_per_triangle(format: MeshFormat) -> u64 {
     match format {
-        MeshFormat::Obj => 30,
+        MeshFormat::Obj => 40,
         MeshFormat::Ply => 19,
         MeshFormat::Stl => 50,
         MeshFormat::Gltf | MeshFormat::Glb => 12,
