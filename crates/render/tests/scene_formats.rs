@@ -625,6 +625,13 @@ fn gltf_without_a_default_scene_takes_every_scene_then_root_nodes() {
     assert_eq!(m.normals, None);
     let m = Mesh::from_bytes(&g.glb(""), MeshFormat::Glb, "n.glb").unwrap();
     assert_eq!(z(&m), [1.0, 2.0]);
+    // Application-specific attributes (`_NAME`, allowed by the specification) are ignored.
+    let mut g = Gltf::default();
+    let p = g.vec3(&[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+    let mesh = g.mesh(&[(format!(r#"{{"POSITION":{p},"_BATCHID":{p}}}"#), None, 4)]);
+    g.node(&format!(r#"{{"mesh":{mesh}}}"#));
+    let m = Mesh::from_bytes(&g.glb(""), MeshFormat::Glb, "x.glb").unwrap();
+    assert_eq!(m.len(), 1);
 }
 
 #[test]
