@@ -655,6 +655,14 @@ fn gltf_refusals_name_the_file() {
     let msg = msg.to_string();
     assert!(msg.starts_with("c.gltf: invalid glTF: "), "{msg}");
     assert!(!msg.contains('\n'));
+    // 64-bit counts and offsets at their largest: no overflow, an error.
+    for (field, value) in [("count", "4"), ("byteOffset", "0"), ("byteLength", "48")] {
+        let from = format!(r#""{field}":{value}"#);
+        assert!(json.contains(&from), "{field}");
+        let huge = json.replacen(&from, &format!(r#""{field}":18446744073709551615"#), 1);
+        let e = Mesh::from_bytes(huge.as_bytes(), MeshFormat::Gltf, "u.gltf").unwrap_err();
+        assert!(e.to_string().starts_with("u.gltf: invalid glTF: "), "{field}: {e}");
+    }
     // Not JSON, not valid glTF, a cycle in the hierarchy.
     for (bytes, what) in [
         (&b"{"[..], "EOF"),

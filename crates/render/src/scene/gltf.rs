@@ -354,8 +354,8 @@ impl Output {
         };
         self.bytes = self
             .bytes
-            .saturating_add(vertex_count as u64 * (24 + 12))
-            .saturating_add(triangle_count as u64 * (12 + 36));
+            .saturating_add((vertex_count as u64).saturating_mul(24 + 12))
+            .saturating_add((triangle_count as u64).saturating_mul(12 + 36));
         if self.bytes > self.budget {
             return Err(format!(
                 "the instanced meshes add up to more than {} bytes of output, over {}x the \
@@ -447,16 +447,18 @@ fn accessor_bytes<'b>(
         .view()
         .ok_or_else(|| format!("accessor {index} has no buffer view (not supported)"))?;
     let data = &buffers[view.buffer().index()];
+    // Counts and offsets are 64-bit in the JSON: all arithmetic on them saturates, and any
+    // sum past the data is refused.
     let (start, len) = (view.offset() as u64, view.length() as u64);
-    if start + len > data.len() as u64 {
+    let view_end = start.saturating_add(len);
+    if view_end > data.len() as u64 {
         return Err(format!(
-            "buffer view {} (bytes {start}..{}) runs past its buffer's {} bytes",
+            "buffer view {} (bytes {start}..{view_end}) runs past its buffer's {} bytes",
             view.index(),
-            start + len,
             data.len()
         ));
     }
-    let view_bytes = &data[start as usize..(start + len) as usize];
+    let view_bytes = &data[start as usize..view_end as usize];
     let element = accessor.size();
     let stride = view.stride().unwrap_or(element);
     if stride < element {
@@ -466,7 +468,7 @@ fn accessor_bytes<'b>(
     let offset = accessor.offset() as u64;
     let end = match count {
         0 => offset,
-        _ => offset + (count - 1) * stride as u64 + element as u64,
+        _ => offset.saturating_add((count - 1).saturating_mul(stride as u64)) + element as u64,
     };
     if end > len {
         return Err(format!(
