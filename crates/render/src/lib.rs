@@ -42,8 +42,9 @@
 //!
 //! # Modules
 //!
-//! - [`scene`]: triangle meshes from OBJ files ([`scene::Mesh`]), with a documented triangle
-//!   order and one-line errors naming file and line.
+//! - [`scene`]: triangle meshes from OBJ, PLY, STL and glTF files, optionally gzip-compressed
+//!   ([`scene::Mesh`]), with a documented triangle order and one-line errors naming file and
+//!   line.
 //! - [`bvh`]: a bounding volume hierarchy over boxes (binned SAH, robust traversal).
 //! - [`accel`]: [`accel::Accel`], a back end's prepared triangles in BVH order with closest-hit
 //!   and any-hit queries and their brute-force references.
