@@ -282,3 +282,59 @@ fn real_meshes_match_an_independent_reading() {
         }
     }
 }
+
+#[test]
+fn a_byte_order_mark_is_skipped() {
+    let text = format!("\u{feff}{SQUARE}f 1 2 3 4\n");
+    let (mesh, _dir) = load_text("bom.obj", &text);
+    let mesh = mesh.unwrap();
+    assert_eq!(mesh.len(), 2);
+    assert_eq!(mesh.triangle::<f64>(0).a, [0.0, 0.0, 0.0]);
+    assert_eq!(
+        Mesh::from_obj_str(&text, "bom.obj").unwrap(),
+        Mesh { name: "bom.obj".into(), ..mesh }
+    );
+}
+
+#[test]
+fn texture_and_normal_references_must_exist() {
+    // No vt at all: tobj skips the reference; it is an error here.
+    assert_eq!(
+        error_at(&format!("{SQUARE}f 1 2 3\nf 1/2/3 2 3\n"), 6),
+        "texture coordinate index 2 is out of range (the file has no texture coordinates)"
+    );
+    assert_eq!(
+        error_at(&format!("{SQUARE}vt 0 0\nf 1//9 2//1 3//1\n"), 6),
+        "normal index 9 is out of range (the file has no normals)"
+    );
+    // With one vn, index 9 is out of range too (tobj reports it, the check names the line).
+    assert_eq!(
+        error_at(&format!("{SQUARE}vn 0 0 1\nf 1//9 2//1 3//1\n"), 6),
+        "normal index 9 is out of range (the file has 1 normals)"
+    );
+    // Existing references are fine, with or without the other kind.
+    let ok = format!("{SQUARE}vt 0 0\nvn 0 0 1\nf 1/1 2/1 3/1\nf 1//1 3//1 4//1\n");
+    assert_eq!(Mesh::from_obj_str(&ok, "ok.obj").unwrap().len(), 2);
+}
+
+#[test]
+fn nul_bytes_mean_not_a_text_file() {
+    let (result, dir) = load_text("bin.obj", &format!("{SQUARE}\0f 1 2 3\n"));
+    let msg = result.unwrap_err().to_string();
+    let path = dir.path().join("bin.obj");
+    assert_eq!(msg, format!("{}: not a text file (NUL byte at line 5)", path.display()));
+    let e = Mesh::from_obj_str("\0", "x.obj").unwrap_err().to_string();
+    assert_eq!(e, "x.obj: not a text file (NUL byte at line 1)");
+}
+
+#[test]
+fn coordinates_beyond_a_limit_are_found_among_used_vertices() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 -4e38\nv 5e38 0 0\nf 1 2 3\nf 1 4 2\nf 5 1 2\n";
+    let mesh = Mesh::from_obj_str(text, "big.obj").unwrap();
+    let limit = f64::from(f32::MAX);
+    assert_eq!(mesh.first_coordinate_beyond(limit), Some((3, -4e38)));
+    assert_eq!(mesh.first_coordinate_beyond(4.5e38), Some((4, 5e38)));
+    assert_eq!(mesh.first_coordinate_beyond(1e39), None);
+    let small = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1e39 0 0\nf 1 2 3\n", "s.obj");
+    assert_eq!(small.unwrap().first_coordinate_beyond(limit), None);
+}

@@ -188,3 +188,39 @@ fn check_face(words: &[&str], so_far: &Counts, totals: &Counts) -> Result<(), Pr
     }
     Ok(())
 }
+
+/// The first face that refers to a texture coordinate (`v/vt`) when the file has no `vt`
+/// statement, or to a normal (`v//vn`) when it has no `vn`: `tobj` skips those silently.
+pub(super) fn dangling_reference(text: &str, file: &str) -> Option<SceneError> {
+    let mut totals = Counts::default();
+    // The first line referring to each kind, with the reference.
+    let mut first_vt: Option<(usize, String)> = None;
+    let mut first_vn: Option<(usize, String)> = None;
+    for (i, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        let keyword = words.next();
+        totals.count(keyword);
+        if keyword != Some("f") || (first_vt.is_some() && first_vn.is_some()) {
+            continue;
+        }
+        for word in words {
+            let mut parts = word.split('/').skip(1);
+            let (vt, vn) = (parts.next().unwrap_or(""), parts.next().unwrap_or(""));
+            if !vt.is_empty() && first_vt.is_none() {
+                first_vt = Some((i + 1, vt.to_owned()));
+            }
+            if !vn.is_empty() && first_vn.is_none() {
+                first_vn = Some((i + 1, vn.to_owned()));
+            }
+        }
+    }
+    // Report the earlier line when both kinds dangle.
+    let vt = first_vt.filter(|_| totals.vt == 0).map(|(l, i)| (l, i, "texture coordinate"));
+    let vn = first_vn.filter(|_| totals.vn == 0).map(|(l, i)| (l, i, "normal"));
+    let (line, index, what) = [vt, vn].into_iter().flatten().min_by_key(|(l, _, _)| *l)?;
+    Some(SceneError::Malformed {
+        file: file.to_owned(),
+        line,
+        problem: format!("{what} index {index} is out of range (the file has no {what}s)"),
+    })
+}

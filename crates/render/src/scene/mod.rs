@@ -1,36 +1,47 @@
-//! Triangle meshes loaded from Wavefront OBJ files.
+//! Triangle meshes loaded from Wavefront OBJ, PLY, STL and glTF 2.0 files, optionally
+//! gzip-compressed (`.obj.gz`, `.ply.gz`).
 //!
 //! # Triangle order
 //!
-//! Hit reports name triangles by index, so the order is part of the interface:
+//! Hit reports name triangles by index, so the order is part of the interface. Each format's
+//! module documents its order; in short:
 //!
-//! 1. Faces are taken in the order of their `f` lines in the file, across every object (`o`),
-//!    group (`g`) and material (`usemtl`) section: all sections are merged into one mesh.
-//! 2. A face with `n >= 3` vertices `(v0, v1, ..., v(n-1))` becomes the `n - 2` triangles of
-//!    the fan from its first vertex, in this order: `(v0, v1, v2), (v0, v2, v3), ...,
-//!    (v0, v(n-2), v(n-1))`. A quad `(a, b, c, d)` gives `(a, b, c), (a, c, d)`.
-//! 3. Triangle `i` of the mesh is the `i`-th triangle of that sequence, counting from 0.
+//! - [OBJ](obj): faces in the order of their `f` lines, all objects and groups merged; a face
+//!   `(v0, v1, ..., v(n-1))` becomes the fan `(v0, v1, v2), (v0, v2, v3), ...,
+//!   (v0, v(n-2), v(n-1))`.
+//! - [PLY](ply): faces in the order of the `face` element, each fanned as in OBJ.
+//! - [STL](stl): facets in file order, one triangle each.
+//! - [glTF](gltf): nodes in depth-first order of the scene, primitives in the order of their
+//!   mesh, triangles in the order of their indices; strips and fans as documented there.
 //!
+//! Triangle `i` of the mesh is the `i`-th triangle of that sequence, counting from 0.
 //! Degenerate (zero-area) faces are kept in this order: the kernels never report hits on
 //! them, and dropping them would shift every later index.
 //!
-//! # What the loader accepts
+//! # Formats
 //!
-//! Parsing is done by [`tobj`] (with `f64` coordinates). Polylines (`l`), texture coordinates,
-//! vertex colours (`v x y z r g b`) and materials are ignored; a vertex weight
-//! (`v x y z w`) divides the coordinates. Face indices may be negative (relative to the vertices read so
-//! far) and may point to a vertex that appears later in the file. Vertex normals are kept
-//! when every face vertex of the file has one (`v//vn` or `v/vt/vn`).
+//! The format comes from the file name's extension, in any case ([`MeshFormat::from_path`]):
+//! `.obj`, `.ply`, `.stl`, `.gltf`, `.glb`, and `.obj.gz` or `.ply.gz` for gzip-compressed
+//! OBJ or PLY. [`Mesh::from_bytes`] parses bytes already in memory.
 //!
-//! Errors ([`SceneError`]) are one line naming the file and, for a problem in the text, the
-//! line: `scene.obj:17: face index 9 is out of range (the file has 8 vertices)`. `tobj`
-//! reports no line numbers, so when it fails (or accepts something this loader rejects: a
-//! face of one or two vertices, a NaN or infinite number) a second pass over the text finds
-//! the offending line; a file that loads cleanly pays only for checks over the loaded data.
+//! # Errors and resources
+//!
+//! Errors ([`SceneError`]) are one line naming the file and, for a problem in a text
+//! format, the line: `scene.obj:17: face index 9 is out of range (the file has 8 vertices)`.
+//! Counts in binary headers (PLY element counts, the STL facet count, glTF accessor counts)
+//! are checked against the bytes present before anything is allocated for them, so a
+//! truncated file or an absurd count is an error, never a large allocation. See
+//! [`Mesh::from_bytes`] for the memory bound and [`Mesh::load`] for the check against the
+//! memory available.
 
 mod check;
+pub mod gltf;
+pub mod gz;
+pub mod memory;
+pub mod obj;
+pub mod ply;
+pub mod stl;
 
-use std::borrow::Cow;
 use std::path::Path;
 
 use intersect::{Real, Triangle};
@@ -43,7 +54,7 @@ pub enum SceneError {
     /// The file is missing, not a regular file, unreadable or too large for memory.
     #[error(transparent)]
     Input(#[from] crate::input::InputError),
-    /// A line of the file is not valid OBJ (or not something this loader accepts).
+    /// A line of a text file is not valid (or not something this loader accepts).
     #[error("{file}:{line}: {problem}")]
     Malformed {
         /// The file name as given.
@@ -80,6 +91,45 @@ pub enum SceneError {
         /// `tobj`'s description.
         message: String,
     },
+    /// The file is not valid in its format (a binary file, or a problem with no line).
+    #[error("{file}: {problem}")]
+    Invalid {
+        /// The file name as given.
+        file: String,
+        /// What is wrong, e.g. `invalid PLY: the file ends inside element vertex 3`.
+        problem: String,
+    },
+    /// A text format holds a NUL byte: the file is not text (or is corrupt).
+    #[error("{file}: not a text file (NUL byte at line {line})")]
+    NotText {
+        /// The file name as given.
+        file: String,
+        /// Line of the first NUL byte, counting from 1.
+        line: usize,
+    },
+    /// The file name's extension names no supported format.
+    #[error(
+        "{file}: unsupported mesh format (supported: .obj, .ply, .stl, .gltf, .glb, .obj.gz, \
+         .ply.gz)"
+    )]
+    Unsupported {
+        /// The file name as given.
+        file: String,
+    },
+    /// Loading the mesh would need more memory than the machine has available.
+    #[error(
+        "{file}: too large for memory: needs about {} GB, {} GB available",
+        gigabytes(*needed),
+        gigabytes(*available)
+    )]
+    OutOfMemory {
+        /// The file name as given.
+        file: String,
+        /// Estimated bytes needed.
+        needed: u64,
+        /// Bytes available (`MemAvailable`, or what the allocator refused).
+        available: u64,
+    },
     /// The mesh is too large for 32-bit triangle or vertex indices.
     #[error("{file}: too large: {count} {what} (at most 4294967295)")]
     TooLarge {
@@ -90,6 +140,97 @@ pub enum SceneError {
         /// `"vertices"` or `"triangles"`.
         what: &'static str,
     },
+}
+
+/// Bytes as gigabytes with one decimal (at least 0.1 so that a refusal never reads "0.0").
+fn gigabytes(bytes: u64) -> String {
+    format!("{:.1}", (bytes as f64 / 1e9).max(0.1))
+}
+
+impl SceneError {
+    /// A [`SceneError::Invalid`] for `file`.
+    pub(crate) fn invalid(file: &str, problem: impl Into<String>) -> SceneError {
+        SceneError::Invalid { file: file.to_owned(), problem: problem.into() }
+    }
+}
+
+/// A mesh file format, chosen by the file name's extension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MeshFormat {
+    /// Wavefront OBJ (text).
+    Obj,
+    /// PLY, the Stanford polygon format (ASCII or binary, either endianness).
+    Ply,
+    /// STL (ASCII or binary).
+    Stl,
+    /// glTF 2.0 JSON (`.gltf`), with buffers in external files or `data:` URIs.
+    Gltf,
+    /// glTF 2.0 binary container (`.glb`).
+    Glb,
+}
+
+impl MeshFormat {
+    /// Every format, in the order of the supported-formats message.
+    pub const ALL: [MeshFormat; 5] =
+        [MeshFormat::Obj, MeshFormat::Ply, MeshFormat::Stl, MeshFormat::Gltf, MeshFormat::Glb];
+
+    /// The format's usual name (`"OBJ"`, `"PLY"`, `"STL"`, `"glTF"`, `"GLB"`).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            MeshFormat::Obj => "OBJ",
+            MeshFormat::Ply => "PLY",
+            MeshFormat::Stl => "STL",
+            MeshFormat::Gltf => "glTF",
+            MeshFormat::Glb => "GLB",
+        }
+    }
+
+    /// The lower-case extension without the dot (`"obj"`, ...).
+    #[must_use]
+    pub fn extension(self) -> &'static str {
+        match self {
+            MeshFormat::Obj => "obj",
+            MeshFormat::Ply => "ply",
+            MeshFormat::Stl => "stl",
+            MeshFormat::Gltf => "gltf",
+            MeshFormat::Glb => "glb",
+        }
+    }
+
+    /// The format of `path` from its extension, in any case, and whether the file is
+    /// gzip-compressed (`.obj.gz`, `.ply.gz`).
+    ///
+    /// ```
+    /// use render::scene::MeshFormat;
+    /// use std::path::Path;
+    /// assert_eq!(MeshFormat::from_path(Path::new("a/Bunny.PLY.gz"))?, (MeshFormat::Ply, true));
+    /// assert_eq!(MeshFormat::from_path(Path::new("x.glb"))?, (MeshFormat::Glb, false));
+    /// assert!(MeshFormat::from_path(Path::new("x.stl.gz")).is_err());
+    /// # Ok::<(), render::scene::SceneError>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`SceneError::Unsupported`] for any other name.
+    pub fn from_path(path: &Path) -> Result<(MeshFormat, bool), SceneError> {
+        let unsupported = || SceneError::Unsupported { file: path.display().to_string() };
+        let name = path.file_name().ok_or_else(unsupported)?.to_string_lossy().to_lowercase();
+        let (stem, gzip) = match name.strip_suffix(".gz") {
+            Some(stem) => (stem, true),
+            None => (name.as_str(), false),
+        };
+        let format = MeshFormat::ALL
+            .into_iter()
+            .find(|f| {
+                stem.strip_suffix(f.extension()).is_some_and(|s| s.ends_with('.') && s.len() > 1)
+            })
+            .ok_or_else(unsupported)?;
+        if gzip && !matches!(format, MeshFormat::Obj | MeshFormat::Ply) {
+            return Err(unsupported());
+        }
+        Ok((format, gzip))
+    }
 }
 
 /// A triangle mesh: shared vertex positions and triangles indexing them.
@@ -109,19 +250,63 @@ pub struct Mesh {
 }
 
 impl Mesh {
-    /// Loads an OBJ file.
+    /// Loads a mesh file in the format its name gives ([`MeshFormat::from_path`]); a glTF
+    /// file's external buffers are read from beside it.
+    ///
+    /// Before reading, the memory the load and a render need is estimated from the file size
+    /// ([`memory::peak_estimate`]) and compared with the memory available; a gzip stream is
+    /// decompressed only up to what that memory can hold.
     ///
     /// # Errors
     ///
-    /// [`SceneError`]: the file is missing or unreadable, a line is malformed (bad number,
-    /// face index zero or out of range, face with fewer than 3 vertices), a coordinate is NaN
-    /// or infinite, or the file has no face.
+    /// [`SceneError`]: unsupported extension; the file is missing or unreadable; too large
+    /// for memory; malformed (bad number, index out of range, face with fewer than 3
+    /// vertices, truncated binary data, NUL byte in a text format, ...); a coordinate is NaN or
+    /// infinite; the file has no face.
     pub fn load(path: &Path) -> Result<Mesh, SceneError> {
+        // A missing file or a directory is named as such, whatever its name.
+        let size = crate::input::regular_file_size(path)?;
+        let (format, gzip) = MeshFormat::from_path(path)?;
+        let name = path.display().to_string();
+        if !gzip {
+            memory::check_fits(&name, memory::peak_estimate(format, size))?;
+        }
         let bytes = crate::input::read_file(path)?;
-        // Tolerate stray non-UTF-8 bytes (comments in Latin-1 are common); a number spoilt by
-        // one is reported as a bad number on its line.
-        let text = String::from_utf8_lossy(&bytes);
-        Self::from_obj_str(&text, &path.display().to_string())
+        let bytes = if gzip {
+            let limit = memory::decompression_limit(format);
+            let text = gz::gunzip(&bytes, limit, &name)?;
+            drop(bytes);
+            memory::check_fits(&name, memory::peak_estimate(format, text.len() as u64))?;
+            text
+        } else {
+            bytes
+        };
+        match format {
+            MeshFormat::Gltf => gltf::from_gltf_bytes(&bytes, &name, Some(path)),
+            _ => Self::from_bytes(&bytes, format, &name),
+        }
+    }
+
+    /// Parses a mesh held in memory; `name` names the source in error messages and becomes
+    /// [`Mesh::name`]. For [`MeshFormat::Gltf`] only buffers in `data:` URIs are resolved (a
+    /// reference to an external file is an error; [`Mesh::load`] reads those).
+    ///
+    /// On any input this returns (never panics, never loops without bound), and the memory it
+    /// allocates is bounded by [`memory::FROM_BYTES_MULTIPLE`] times `bytes.len()` plus a
+    /// constant: every count is checked against the bytes present before anything is
+    /// reserved for it.
+    ///
+    /// # Errors
+    ///
+    /// As [`Mesh::load`], except for file access.
+    pub fn from_bytes(bytes: &[u8], format: MeshFormat, name: &str) -> Result<Mesh, SceneError> {
+        match format {
+            MeshFormat::Obj => obj::from_obj_bytes(bytes, name),
+            MeshFormat::Ply => ply::from_ply_bytes(bytes, name),
+            MeshFormat::Stl => stl::from_stl_bytes(bytes, name),
+            MeshFormat::Gltf => gltf::from_gltf_bytes(bytes, name, None),
+            MeshFormat::Glb => gltf::from_glb_bytes(bytes, name),
+        }
     }
 
     /// Parses OBJ text; `name` names the source in error messages and becomes
@@ -131,44 +316,7 @@ impl Mesh {
     ///
     /// As [`Mesh::load`], except for file access.
     pub fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
-        // tobj reads `l` (polyline) statements as faces; blank them, keeping line numbers.
-        let text = blank_polylines(text);
-        // The struct update covers fields that exist only with some tobj features, which
-        // another crate of a build may switch on.
-        #[allow(clippy::needless_update)]
-        let options = tobj::LoadOptions {
-            single_index: true,
-            // The fan is built here, so that faces of 1 or 2 vertices stay visible as errors.
-            triangulate: false,
-            ignore_points: false,
-            ignore_lines: false,
-            ..Default::default()
-        };
-        let parse = |text: &str| {
-            tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| {
-                // Materials are not used; do not read .mtl files.
-                Err(tobj::LoadError::GenericFailure)
-            })
-        };
-        let loaded = match parse(&text) {
-            // tobj fails when some vertices have colours (`v x y z r g b`) and others not;
-            // colours are not used, so drop them and parse again.
-            Err(tobj::LoadError::FaceColorOutOfBounds) => parse(&strip_vertex_colours(&text)),
-            other => other,
-        };
-        let models = match loaded {
-            Ok((models, _materials)) => models,
-            Err(e) => return Err(locate(&text, name, || e.to_string())),
-        };
-        let mesh = assemble(&models, name)?;
-        match mesh {
-            Some(mesh) if mesh.triangles.is_empty() => {
-                Err(SceneError::NoFaces { file: name.to_owned() })
-            }
-            Some(mesh) => Ok(mesh),
-            // Something tobj accepted that this loader rejects: find the line.
-            None => Err(locate(&text, name, || "unsupported content".to_owned())),
-        }
+        obj::from_obj_str(text, name)
     }
 
     /// Number of triangles.
@@ -198,6 +346,27 @@ impl Mesh {
     #[must_use]
     pub fn triangles<T: Real>(&self) -> Vec<Triangle<T>> {
         (0..self.len()).map(|i| self.triangle(i)).collect()
+    }
+
+    /// The first vertex used by a triangle (in triangle order, corners `a`, `b`, `c`) with a
+    /// coordinate of magnitude above `limit`, as its index into [`Mesh::positions`] and the
+    /// coordinate; `None` if there is none. With `limit = f32::MAX as f64` this finds the
+    /// vertices that `f32` cannot hold (they would round to infinity).
+    ///
+    /// ```
+    /// let text = "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nv 0 0 -1e40\nf 1 2 3\n";
+    /// let mesh = render::scene::Mesh::from_obj_str(text, "big.obj")?;
+    /// // Vertex 3 (-1e40) is not used by a triangle.
+    /// assert_eq!(mesh.first_coordinate_beyond(f32::MAX.into()), Some((1, 1e39)));
+    /// assert_eq!(mesh.first_coordinate_beyond(1e40), None);
+    /// # Ok::<(), render::scene::SceneError>(())
+    /// ```
+    #[must_use]
+    pub fn first_coordinate_beyond(&self, limit: f64) -> Option<(usize, f64)> {
+        self.triangles.iter().flatten().find_map(|&v| {
+            let p = self.positions[v as usize];
+            p.into_iter().find(|x| x.abs() > limit).map(|x| (v as usize, x))
+        })
     }
 
     /// The box of the vertices used by triangles (empty for an empty mesh).
@@ -233,118 +402,74 @@ impl Mesh {
     }
 }
 
-/// Replaces each `l` statement with an empty comment so that tobj does not read it as a face.
-fn blank_polylines(text: &str) -> Cow<'_, str> {
-    let is_polyline = |line: &str| line.split_whitespace().next() == Some("l");
-    // A substring search first: most files have no `l` statement and skip the line scan.
-    let maybe = text.contains("l ") || text.contains("l\t");
-    if !maybe || !text.lines().any(is_polyline) {
-        return Cow::Borrowed(text);
-    }
-    let mut out = String::with_capacity(text.len());
-    for line in text.split_inclusive('\n') {
-        if is_polyline(line) {
-            out.push('#');
-            // Keep the line ending (and so the line count).
-            out.push_str(line.strip_prefix(line.trim_end_matches(['\n', '\r'])).unwrap_or(""));
-        } else {
-            out.push_str(line);
-        }
-    }
-    Cow::Owned(out)
+/// An indexed mesh as the binary formats give it: positions, optional per-vertex normals and
+/// triangles, turned into a [`Mesh`] by [`IndexedMesh::finish`].
+#[derive(Default)]
+pub(crate) struct IndexedMesh {
+    pub(crate) positions: Vec<[f64; 3]>,
+    /// One normal per position, or empty.
+    pub(crate) normals: Vec<[f32; 3]>,
+    pub(crate) triangles: Vec<[u32; 3]>,
 }
 
-/// The text with every `v x y z r g b` statement cut to `v x y z`; line numbers unchanged.
-fn strip_vertex_colours(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for line in text.split_inclusive('\n') {
-        let words: Vec<&str> = line.split_whitespace().collect();
-        if words.len() == 7 && words[0] == "v" {
-            out.push_str(&words[..4].join(" "));
-            out.push('\n');
-        } else {
-            out.push_str(line);
-        }
-    }
-    out
-}
-
-/// The error for a text that failed: the first bad line if the check finds one, else a
-/// file-level error with `fallback`'s message.
-fn locate(text: &str, name: &str, fallback: impl FnOnce() -> String) -> SceneError {
-    check::first_problem(text, name)
-        .unwrap_or_else(|| SceneError::Obj { file: name.to_owned(), message: fallback() })
-}
-
-/// Merges tobj's models into one mesh in file order. `Ok(None)` if the data holds something
-/// this loader rejects (a face of fewer than 3 vertices, a non-finite number), to be located
-/// in the text by the caller.
-fn assemble(models: &[tobj::Model], name: &str) -> Result<Option<Mesh>, SceneError> {
-    let vertex_count: usize = models.iter().map(|m| m.mesh.positions.len() / 3).sum();
-    if u32::try_from(vertex_count).is_err() {
-        return Err(SceneError::TooLarge {
-            file: name.to_owned(),
-            count: vertex_count,
-            what: "vertices",
-        });
-    }
-    // Normals only if every model has one per vertex (with a single index, tobj stores a
-    // normal for a vertex exactly when its face vertex had one).
-    // Models without faces (tobj ends the file with one after a trailing `o`) do not count.
-    let with_normals = models
-        .iter()
-        .filter(|m| !m.mesh.indices.is_empty())
-        .all(|m| !m.mesh.normals.is_empty() && m.mesh.normals.len() == m.mesh.positions.len());
-
-    let mut mesh = Mesh { name: name.to_owned(), ..Mesh::default() };
-    let mut corner_normals = Vec::new();
-    for model in models {
-        let m = &model.mesh;
-        let base = mesh.positions.len() as u32;
-        for p in m.positions.chunks_exact(3) {
-            if !p.iter().all(|x| x.is_finite()) {
-                return Ok(None);
+impl IndexedMesh {
+    /// Checks the data (finite positions and normals, indices in range, 32-bit counts, at
+    /// least one triangle) and builds the mesh, with corner normals if every vertex has one.
+    pub(crate) fn finish(self, name: &str) -> Result<Mesh, SceneError> {
+        let IndexedMesh { positions, normals, triangles } = self;
+        for (what, count) in [("vertices", positions.len()), ("triangles", triangles.len())] {
+            if u32::try_from(count).is_err() {
+                return Err(SceneError::TooLarge { file: name.to_owned(), count, what });
             }
-            mesh.positions.push([p[0], p[1], p[2]]);
         }
-        let normal = |v: u32| -> [f32; 3] {
-            let i = 3 * v as usize;
-            [m.normals[i] as f32, m.normals[i + 1] as f32, m.normals[i + 2] as f32]
+        if triangles.is_empty() {
+            return Err(SceneError::NoFaces { file: name.to_owned() });
+        }
+        if let Some((i, p)) = positions.iter().enumerate().find(|(_, p)| !all_finite(p)) {
+            return Err(SceneError::invalid(
+                name,
+                format!("vertex {i} has a coordinate that is not finite: {p:?}"),
+            ));
+        }
+        if let Some((i, n)) = normals.iter().enumerate().find(|(_, n)| !all_finite(n)) {
+            return Err(SceneError::invalid(
+                name,
+                format!("the normal of vertex {i} has a component that is not finite: {n:?}"),
+            ));
+        }
+        let count = positions.len();
+        if let Some((i, t)) =
+            triangles.iter().enumerate().find(|(_, t)| t.iter().any(|&v| v as usize >= count))
+        {
+            return Err(SceneError::invalid(
+                name,
+                format!("triangle {i} refers to vertex {t:?}, but there are {count} vertices"),
+            ));
+        }
+        let normals = if !normals.is_empty() && normals.len() == count {
+            let mut corners = try_vec(triangles.len(), name)?;
+            corners.extend(triangles.iter().map(|t| t.map(|v| normals[v as usize])));
+            Some(corners)
+        } else {
+            None
         };
-        if with_normals && !m.normals.iter().all(|x: &f64| x.is_finite()) {
-            return Ok(None);
-        }
-        let mut first = 0usize;
-        // With no arities, every face is a triangle.
-        let arities = m.face_arities.iter().copied().chain(core::iter::repeat(3));
-        for arity in arities {
-            if first >= m.indices.len() {
-                break;
-            }
-            let arity = arity as usize;
-            if arity < 3 {
-                return Ok(None);
-            }
-            let face = &m.indices[first..first + arity];
-            for k in 1..arity - 1 {
-                let tri = [face[0], face[k], face[k + 1]];
-                mesh.triangles.push(tri.map(|v| base + v));
-                if with_normals {
-                    corner_normals.push(tri.map(normal));
-                }
-            }
-            first += arity;
-        }
+        Ok(Mesh { name: name.to_owned(), positions, triangles, normals })
     }
-    if u32::try_from(mesh.triangles.len()).is_err() {
-        return Err(SceneError::TooLarge {
-            file: name.to_owned(),
-            count: mesh.triangles.len(),
-            what: "triangles",
-        });
-    }
-    if with_normals && !models.is_empty() {
-        mesh.normals = Some(corner_normals);
-    }
-    Ok(Some(mesh))
+}
+
+/// Whether every component is finite.
+fn all_finite<T: Into<f64> + Copy>(v: &[T; 3]) -> bool {
+    v.iter().all(|&x| x.into().is_finite())
+}
+
+/// An empty vector with room for `n` elements, or [`SceneError::OutOfMemory`] if the
+/// allocator refuses.
+pub(crate) fn try_vec<T>(n: usize, name: &str) -> Result<Vec<T>, SceneError> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| SceneError::OutOfMemory {
+        file: name.to_owned(),
+        needed: (n as u64).saturating_mul(size_of::<T>() as u64),
+        available: memory::available().unwrap_or(0),
+    })?;
+    Ok(v)
 }
