@@ -9,7 +9,9 @@
 //!   component is finite, and there is one normal triple per triangle.
 
 use render::output::npy;
-use render::scene::{Mesh, SceneError};
+use render::scene::MeshFormat::{self, Glb, Gltf, Obj, Ply, Stl};
+use render::scene::memory::FROM_BYTES_MULTIPLE;
+use render::scene::{Mesh, SceneError, gz};
 
 /// What a reader made of one input: `Ok` with a short description of what it read (without
 /// numbers, so that it can tell kinds of answer apart), or its error message.
@@ -29,10 +31,22 @@ pub struct Target {
     pub memory_per_byte: usize,
 }
 
+/// What `Mesh::from_bytes` promises to allocate at most per input byte.
+const MESH: usize = FROM_BYTES_MULTIPLE as usize;
+
+/// The most a deflate stream expands (1032 to 1), so the most a gzip target's input can hold.
+const GZ: usize = 1032;
+
 /// Every target. Adding a reader is one row here and a folder of seeds in `fuzz/corpus/`.
 pub const TARGETS: &[Target] = &[
     Target { name: "npy", run: npy_rays, tokens: NPY_TOKENS, memory_per_byte: 64 },
-    Target { name: "obj", run: obj_text, tokens: OBJ_TOKENS, memory_per_byte: 256 },
+    Target { name: "obj", run: |b| mesh(Obj, b), tokens: OBJ_TOKENS, memory_per_byte: MESH },
+    Target { name: "ply", run: |b| mesh(Ply, b), tokens: PLY_TOKENS, memory_per_byte: MESH },
+    Target { name: "stl", run: |b| mesh(Stl, b), tokens: STL_TOKENS, memory_per_byte: MESH },
+    Target { name: "gltf", run: |b| mesh(Gltf, b), tokens: GLTF_TOKENS, memory_per_byte: MESH },
+    Target { name: "glb", run: |b| mesh(Glb, b), tokens: GLTF_TOKENS, memory_per_byte: MESH },
+    Target { name: "obj.gz", run: |b| gz(Obj, b), tokens: GZ_TOKENS, memory_per_byte: GZ * MESH },
+    Target { name: "ply.gz", run: |b| gz(Ply, b), tokens: GZ_TOKENS, memory_per_byte: GZ * MESH },
 ];
 
 /// The target called `name`.
@@ -113,6 +127,92 @@ const OBJ_TOKENS: &[&[u8]] = &[
     b"\0",
 ];
 
+const PLY_TOKENS: &[&[u8]] = &[
+    b"ply\n",
+    b"format ascii 1.0\n",
+    b"format binary_little_endian 1.0\n",
+    b"format binary_big_endian 1.0\n",
+    b"comment x\n",
+    b"element vertex ",
+    b"element face ",
+    b"element vertex 4294967295\n",
+    b"element face 18446744073709551615\n",
+    b"property float x\n",
+    b"property double y\n",
+    b"property uchar red\n",
+    b"property list uchar int vertex_indices\n",
+    b"property list uint uint vertex_index\n",
+    b"property list uchar uchar vertex_indices\n",
+    b"end_header\n",
+    b"\n",
+    b" ",
+    b"\r\n",
+    b"255 ",
+    b"3 0 1 2\n",
+];
+
+const STL_TOKENS: &[&[u8]] = &[
+    b"solid ",
+    b"facet normal 0 0 1\n",
+    b"outer loop\n",
+    b"vertex 0 0 0\n",
+    b"vertex ",
+    b"endloop\n",
+    b"endfacet\n",
+    b"endsolid\n",
+    b"\xff\xff\xff\xff",
+    b"\x01\x00\x00\x00",
+    b"\n",
+    b" ",
+];
+
+const GLTF_TOKENS: &[&[u8]] = &[
+    b"glTF",
+    b"JSON",
+    b"BIN\0",
+    b"\"accessors\"",
+    b"\"bufferView\":",
+    b"\"bufferViews\"",
+    b"\"buffers\"",
+    b"\"byteOffset\":",
+    b"\"byteLength\":",
+    b"\"byteStride\":",
+    b"\"count\":",
+    b"\"componentType\":5126",
+    b"5125",
+    b"5123",
+    b"5121",
+    b"\"type\":\"VEC3\"",
+    b"\"SCALAR\"",
+    b"\"indices\":",
+    b"\"mode\":",
+    b"\"matrix\":[0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0]",
+    b"\"scale\":[1e39,1,1]",
+    b"\"children\":[0]",
+    b"\"nodes\":[0,0]",
+    b"\"sparse\":{\"count\":1}",
+    b"\"uri\":\"data:application/octet-stream;base64,AAAA\"",
+    b"\"uri\":\"x.bin\"",
+    b"null",
+    b"[",
+    b"]",
+    b"{",
+    b"}",
+    b",",
+    b":",
+    b"\"",
+];
+
+/// Bytes that make gzip headers and deflate blocks (the readers' own tokens are in the
+/// compressed stream only by chance: the plain targets fuzz the text inside).
+const GZ_TOKENS: &[&[u8]] = &[
+    b"\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\xff",
+    b"\x1f\x8b\x08\x08",
+    b"\x03\x00",
+    b"\x00\x00\xff\xff",
+    b"\xff\xff\xff\xff",
+];
+
 /// `.npy` rays as `raycast` reads them: an `(N, 6)` array.
 fn npy_rays(bytes: &[u8]) -> Outcome {
     let m = match npy::read_f64_matrix(bytes, 6) {
@@ -137,13 +237,25 @@ fn npy_rays(bytes: &[u8]) -> Outcome {
     Ok(format!("{} array", if m.was_f32 { "f32" } else { "f64" }))
 }
 
-/// OBJ text as `Mesh::load` reads a file: invalid UTF-8 replaced, not refused.
-fn obj_text(bytes: &[u8]) -> Outcome {
-    mesh(Mesh::from_obj_str(&String::from_utf8_lossy(bytes), INPUT_NAME))
+/// A mesh file as `Mesh::load` reads one of `format` (without a glTF's external buffers).
+fn mesh(format: MeshFormat, bytes: &[u8]) -> Outcome {
+    check_mesh(Mesh::from_bytes(bytes, format, INPUT_NAME))
+}
+
+/// The largest decompressed size the gzip targets accept: enough for any mutation of the
+/// seeds, small enough that a bomb is refused quickly.
+const GZ_LIMIT: u64 = 4 << 20;
+
+/// A gzip-compressed file of `format` as `Mesh::load` reads one.
+fn gz(format: MeshFormat, bytes: &[u8]) -> Outcome {
+    match gz::gunzip(bytes, GZ_LIMIT, INPUT_NAME) {
+        Ok(plain) => check_mesh(Mesh::from_bytes(&plain, format, INPUT_NAME)),
+        Err(e) => Err(one_line(&e)),
+    }
 }
 
 /// Checks a mesh reader's answer.
-fn mesh(result: Result<Mesh, SceneError>) -> Outcome {
+fn check_mesh(result: Result<Mesh, SceneError>) -> Outcome {
     let mesh = match result {
         Ok(mesh) => mesh,
         Err(e) => return Err(one_line(&e)),
