@@ -108,7 +108,8 @@ pub enum NpyError {
     /// The header is not the expected dict.
     #[error("malformed .npy header: {0}")]
     Header(String),
-    /// An element type other than little-endian float32 or float64.
+    /// An element type other than little-endian float32 or float64, as written in the file
+    /// (quoted as messages quote the header: escaped and cut short).
     #[error("unsupported dtype '{0}': expected little-endian float32 ('<f4') or float64 ('<f8')")]
     Dtype(String),
     /// The array is stored in Fortran (column-major) order.
@@ -117,7 +118,7 @@ pub enum NpyError {
     /// The array's shape is not `(N, columns)`.
     #[error("array shape {found}: expected (N, {columns})")]
     Shape {
-        /// The shape found, as written in the header.
+        /// The shape found, as written in the header (escaped and cut short).
         found: String,
         /// The expected number of columns.
         columns: usize,
@@ -174,7 +175,7 @@ pub fn read_f64_matrix(bytes: &[u8], columns: usize) -> Result<Matrix, NpyError>
     let size = match fields.descr.as_str() {
         "<f4" => 4,
         "<f8" => 8,
-        other => return Err(NpyError::Dtype(other.to_string())),
+        other => return Err(NpyError::Dtype(shown(other))),
     };
     if fields.fortran_order {
         return Err(NpyError::FortranOrder);
@@ -253,10 +254,10 @@ impl Header {
                         .filter(|d| !d.is_empty())
                         .map(|d| d.parse::<usize>().map_err(|_| bad("shape has a bad dimension")))
                         .collect::<Result<Vec<_>, _>>()?;
-                    shape = Some((dims, format!("({})", &inner[..close])));
+                    shape = Some((dims, shown(&format!("({})", &inner[..close]))));
                     &inner[close + 1..]
                 }
-                other => return Err(bad(&format!("unexpected key '{other}'"))),
+                other => return Err(bad(&format!("unexpected key '{}'", shown(other)))),
             };
             let after = after.trim_start();
             rest = match after.strip_prefix(',') {
@@ -274,6 +275,27 @@ impl Header {
         })
     }
 }
+
+/// Header text as quoted in a message: at most [`SHOWN_CHARS`] characters (then `...`), control
+/// characters escaped (`\n`, `\u{1b}`), so that a message stays one short printable line
+/// whatever the file holds.
+fn shown(text: &str) -> String {
+    let mut out = String::new();
+    for c in text.chars().take(SHOWN_CHARS) {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    if text.chars().nth(SHOWN_CHARS).is_some() {
+        out.push_str("...");
+    }
+    out
+}
+
+/// The most characters of the file's text that a message quotes.
+const SHOWN_CHARS: usize = 40;
 
 /// A leading `'...'` or `"..."` string and the text after it.
 fn quoted(text: &str) -> Option<(&str, &str)> {
@@ -369,6 +391,27 @@ mod tests {
         let mut v9 = good.clone();
         v9[6] = 9;
         assert_eq!(read_f64_matrix(&v9, 3), Err(NpyError::Version(9, 0)));
+    }
+
+    #[test]
+    fn messages_quote_the_header_on_one_short_line() {
+        let with_header = |header: &str| {
+            let mut v = b"\x93NUMPY\x01\x00".to_vec();
+            v.extend_from_slice(&(header.len() as u16).to_le_bytes());
+            v.extend_from_slice(header.as_bytes());
+            read_f64_matrix(&v, 6).unwrap_err().to_string()
+        };
+        // Found by the fuzzer: a line break in a key split the message in two.
+        let e = with_header("{'descr': '<f8', 'fortran_order': False, 'sh\npe': (1, 6), }");
+        assert_eq!(e, "malformed .npy header: unexpected key 'sh\\npe'");
+        let e = with_header("{'descr': '<f\u{1b}[2J', 'fortran_order': False, 'shape': (1, 6)}");
+        assert!(e.starts_with("unsupported dtype '<f\\u{1b}[2J': expected"), "{e}");
+        let long = "1, ".repeat(300);
+        let e = with_header(&format!(
+            "{{'descr': '<f8', 'fortran_order': False, 'shape': (\n{long})}}"
+        ));
+        let shape = format!("(\\n{}...", &long[..38]);
+        assert_eq!(e, format!("array shape {shape}: expected (N, 6)"));
     }
 
     #[test]
