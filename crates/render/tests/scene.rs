@@ -312,6 +312,17 @@ fn texture_and_normal_references_must_exist() {
         error_at(&format!("{SQUARE}vn 0 0 1\nf 1//9 2//1 3//1\n"), 6),
         "normal index 9 is out of range (the file has 1 normals)"
     );
+    // Indices too large for any file (the fuzzer's finds: tobj overflowed on them) are named
+    // like any other out-of-range index.
+    assert_eq!(
+        error_at(&format!("{SQUARE}vn 0 0 1\nf 1//6148914691236517206 2//1 3//1\n"), 6),
+        "normal index 6148914691236517206 is out of range (the file has 1 normals)"
+    );
+    assert_eq!(
+        error_at(&format!("{SQUARE}vt 0 0\nf 1/1 2/1 3/-9223372036854775808\n"), 6),
+        "relative texture coordinate index -9223372036854775808 is out of range \
+         (1 texture coordinates before this line)"
+    );
     // Existing references are fine, with or without the other kind.
     let ok = format!("{SQUARE}vt 0 0\nvn 0 0 1\nf 1/1 2/1 3/1\nf 1//1 3//1 4//1\n");
     assert_eq!(Mesh::from_obj_str(&ok, "ok.obj").unwrap().len(), 2);
@@ -358,4 +369,13 @@ fn a_mesh_too_large_for_memory_is_refused_before_reading() {
     assert!(msg.ends_with(" GB available") && !msg.contains('\n'), "{msg}");
     // Refused from the size alone: reading 4 TB would take hours.
     assert!(start.elapsed().as_secs() < 10);
+}
+
+#[test]
+fn normals_beyond_f32_keep_their_direction() {
+    // A component beyond f32's range would round to infinity: the normal is scaled first.
+    let text = format!("{SQUARE}vn 0 3e38 1e39\nf 1//1 2//1 3//1\n");
+    let mesh = Mesh::from_obj_str(&text, "big.obj").unwrap();
+    let n = mesh.normals.unwrap()[0][0];
+    assert_eq!(n, [0.0, 0.3, 1.0]);
 }

@@ -75,6 +75,12 @@ pub(crate) fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
             Err(tobj::LoadError::GenericFailure)
         })
     };
+    // tobj computes with face indices unchecked (`3 * index`, `len + index`): an index
+    // larger than any count the file could hold overflows inside it. No count exceeds the
+    // number of bytes, so such an index is out of range whatever the file holds: find its line.
+    if has_impossible_index(&text) {
+        return Err(locate(&text, name, || "face index out of range".to_owned()));
+    }
     let loaded = match parse(&text) {
         // tobj fails when some vertices have colours (`v x y z r g b`) and others not;
         // colours are not used, so drop them and parse again.
@@ -103,6 +109,31 @@ pub(crate) fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
         // Something tobj accepted that this loader rejects: find the line.
         None => Err(locate(&text, name, || "unsupported content".to_owned())),
     }
+}
+
+/// Whether a face holds an index (of a vertex, texture coordinate or normal) whose magnitude
+/// exceeds the length of the text, and so every count of the file.
+fn has_impossible_index(text: &str) -> bool {
+    let limit = text.len() as u64;
+    let mut face_lines = text.lines().filter(|l| l.trim_start().starts_with('f'));
+    face_lines.any(|line| {
+        let mut words = line.split_whitespace();
+        words.next() == Some("f")
+            && words.flat_map(|w| w.split('/')).any(|index| {
+                let digits = index.strip_prefix('-').unwrap_or(index);
+                // Too many digits for u64 is impossible too; a non-number is for tobj to refuse.
+                digits.bytes().all(|b| b.is_ascii_digit())
+                    && digits.parse::<u64>().map_or(!digits.is_empty(), |n| n > limit)
+            })
+    })
+}
+
+/// A normal in f32: as written when it fits, else scaled down in f64 first (the direction is
+/// what matters, and a component beyond f32's range would become infinite).
+fn narrow_normal(n: [f64; 3]) -> [f32; 3] {
+    let largest = n.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let n = if largest > f64::from(f32::MAX) { n.map(|x| x / largest) } else { n };
+    n.map(|x| x as f32)
 }
 
 /// Replaces each `l` statement with an empty comment so that tobj does not read it as a face.
@@ -194,7 +225,7 @@ fn assemble(models: &[tobj::Model], name: &str) -> Result<Option<Mesh>, SceneErr
         }
         let normal = |v: u32| -> [f32; 3] {
             let i = 3 * v as usize;
-            [m.normals[i] as f32, m.normals[i + 1] as f32, m.normals[i + 2] as f32]
+            narrow_normal([m.normals[i], m.normals[i + 1], m.normals[i + 2]])
         };
         if with_normals && !m.normals.iter().all(|x: &f64| x.is_finite()) {
             return Ok(None);
