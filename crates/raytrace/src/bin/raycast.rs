@@ -7,10 +7,11 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context as _, bail};
+use backends::{Backend, Job, Precision, dispatch};
 use clap::Parser;
 use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;
-use raytrace::{Backend, Job, Precision, Stats, dispatch};
+use raytrace::Stats;
 use render::accel::Accel;
 use render::output::{AtomicFile, npy};
 use render::scene::Mesh;

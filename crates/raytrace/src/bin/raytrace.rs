@@ -8,10 +8,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::Context as _;
+use backends::{Backend, Job, Precision, dispatch};
 use clap::{Parser, ValueEnum};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use intersect::Intersector;
-use raytrace::{Backend, Job, Precision, Stats, dispatch};
+use raytrace::Stats;
 use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, Mode};
