@@ -23,9 +23,9 @@
 use std::path::Path;
 use std::time::{Duration, SystemTime};
 
+use backends::Job;
 use criterion::{BenchmarkGroup, Criterion, Throughput};
 use intersect::{Intersector, Ray, Triangle};
-use raytrace::Job;
 use render::accel::Accel;
 use wedge_benches::accuracy::mesh::TriMesh;
 use wedge_benches::accuracy::plot::draw_runtime_vs_error;

@@ -40,9 +40,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 use std::time::Instant;
 
-use clap::ValueEnum;
+use backends::{Backend, Job, Precision, dispatch};
 use intersect::{Intersector, Ray};
-use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
 use render::scene::Mesh;
 use serde::Serialize;
@@ -131,8 +130,9 @@ impl Job for Measure<'_> {
 /// Child mode: measures `spec` (`backend:precision`) and prints one figure per ray set.
 fn child(spec: &str) -> Result<(), String> {
     let (backend, precision) = spec.split_once(':').ok_or("expected backend:precision")?;
-    let backend = Backend::from_str(backend, false)?;
-    let precision = Precision::from_str(precision, false)?;
+    let backend = Backend::from_name(backend).ok_or(format!("invalid variant: {backend}"))?;
+    let precision =
+        Precision::from_name(precision).ok_or(format!("invalid variant: {precision}"))?;
     let mesh = bunny();
     let sets = ray_sets(&mesh, quick_mode());
     let figures = dispatch(backend, precision, Measure { mesh: &mesh, sets: &sets });
@@ -216,17 +216,10 @@ fn run_child(spec: &str, embree: &[String]) -> Result<Vec<f64>, String> {
 fn parent() -> Result<(), String> {
     let quick = quick_mode();
     let rounds = if quick { 1 } else { ROUNDS };
-    let specs: Vec<(Backend, Precision)> = Precision::value_variants()
-        .iter()
-        .flat_map(|&p| Backend::value_variants().iter().map(move |&b| (b, p)))
-        .collect();
-    let mut spec_names: Vec<(String, String)> = specs
-        .iter()
-        .map(|(b, p)| {
-            let b = b.to_possible_value().map(|v| v.get_name().to_owned()).unwrap_or_default();
-            (b, p.name().to_owned())
-        })
-        .collect();
+    let specs: Vec<(Backend, Precision)> =
+        Precision::ALL.into_iter().flat_map(|p| Backend::ALL.map(|b| (b, p))).collect();
+    let mut spec_names: Vec<(String, String)> =
+        specs.iter().map(|(b, p)| (b.name().to_owned(), p.name().to_owned())).collect();
     let mut embree_args = Vec::new();
     if embree_available() {
         let mesh = bunny();

@@ -17,11 +17,10 @@
 use std::hint::black_box;
 use std::time::SystemTime;
 
-use clap::ValueEnum;
+use backends::{Backend, Job, Precision, dispatch};
 use criterion::{Criterion, Throughput};
 use exact_tracer::Exact;
 use intersect::{Intersector, Ray, Real, Triangle};
-use raytrace::{Backend, Job, Precision, dispatch};
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::{KernelRow, fill_kernel_ratios_to_la};
 use wedge_benches::{
@@ -163,8 +162,8 @@ fn main() {
     let mut criterion = configured(Criterion::default(), bench_times()).configure_from_args();
     let cases = cases();
     let mut measured = Vec::new();
-    for precision in [Precision::F32, Precision::F64] {
-        for &backend in Backend::value_variants() {
+    for precision in Precision::ALL {
+        for backend in Backend::ALL {
             let job = BenchKernel {
                 criterion: &mut criterion,
                 cases: &cases,

@@ -24,10 +24,9 @@ use std::hint::black_box;
 use std::thread::available_parallelism;
 use std::time::{Duration, SystemTime};
 
-use clap::ValueEnum;
+use backends::{Backend, Job, Precision, dispatch};
 use criterion::{Criterion, SamplingMode, Throughput};
 use intersect::{Intersector, Ray};
-use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::plot::draw_throughput_svg;
@@ -194,13 +193,12 @@ fn main() {
             continue;
         }
         let rays = SceneRays::new(&scene, sizes);
-        for &backend in Backend::value_variants() {
-            let name = backend.to_possible_value().map(|v| v.get_name().to_owned());
-            if backend_filter.as_ref().is_some_and(|f| name.as_ref().is_none_or(|n| !f.contains(n)))
-            {
+        for backend in Backend::ALL {
+            let name = backend.name().to_owned();
+            if backend_filter.as_ref().is_some_and(|f| !f.contains(&name)) {
                 continue;
             }
-            for precision in [Precision::F32, Precision::F64] {
+            for precision in Precision::ALL {
                 let job = BenchBackend {
                     criterion: &mut criterion,
                     scene: &scene,

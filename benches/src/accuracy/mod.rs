@@ -7,7 +7,7 @@
 //! limits.
 //!
 //! ```
-//! use raytrace::{Backend, Precision};
+//! use backends::{Backend, Precision};
 //! use wedge_benches::accuracy::mesh::TriMesh;
 //! use wedge_benches::accuracy::rays::{Aim, edge_rays};
 //! use wedge_benches::accuracy::runner::Subject;

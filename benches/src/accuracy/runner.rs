@@ -2,17 +2,17 @@
 //!
 //! Every check is a generic function over [`Intersector`], so each back end and precision is
 //! compiled and run with static dispatch; [`Subject::run`] picks one at run time (through
-//! [`raytrace::dispatch`] for the back ends, directly for the reference). The reference's
+//! [`backends::dispatch`] for the back ends, directly for the reference). The reference's
 //! verdicts ([`judge_aimed`], [`judge_scene`], [`judge_pairs`]) are computed once per precision
 //! from exactly the values a kernel of that precision sees: the suite's `f64` rays and
 //! triangles rounded to the kernel's precision, then converted back to `f64` (exact).
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
+use backends::{Backend, Guarantees, Job, Precision, dispatch};
 use exact_tracer::predicates::edge_sign;
 use exact_tracer::{Exact, Sign};
 use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
-use raytrace::{Backend, Job, Precision, dispatch};
 use render::accel::Accel;
 
 use super::metrics::{TError, facing_sign, t_error};
@@ -23,13 +23,9 @@ use super::rays::AimedSet;
 pub enum Subject {
     /// `exact_tracer::Exact`.
     Exact,
-    /// A back end of `raytrace`, in one precision.
+    /// A back end of the registry (`backends`), in one precision.
     Kernel(Backend, Precision),
 }
-
-/// Every back end, in the order of the tables.
-pub const BACKENDS: [Backend; 5] =
-    [Backend::La, Backend::LaMt, Backend::Ga, Backend::GaReport, Backend::GaPlucker];
 
 impl Subject {
     /// Every back end in both precisions, then the reference.
@@ -40,12 +36,13 @@ impl Subject {
         all
     }
 
-    /// Every back end in both precisions (f32 first).
+    /// Every back end of the registry ([`Backend::ALL`], the order of the tables) in both
+    /// precisions (f32 first).
     #[must_use]
     pub fn kernels() -> Vec<Subject> {
-        [Precision::F32, Precision::F64]
+        Precision::ALL
             .into_iter()
-            .flat_map(|p| BACKENDS.map(|b| Subject::Kernel(b, p)))
+            .flat_map(|p| Backend::ALL.map(|b| Subject::Kernel(b, p)))
             .collect()
     }
 
@@ -71,11 +68,20 @@ impl Subject {
         }
     }
 
-    /// Whether the back end documents that rays through shared edges and vertices never slip
+    /// What the kernel declares it guarantees ([`Intersector::GUARANTEES`]).
+    #[must_use]
+    pub const fn guarantees(self) -> Guarantees {
+        match self {
+            Subject::Exact => <Exact as Intersector>::GUARANTEES,
+            Subject::Kernel(backend, _) => backend.guarantees(),
+        }
+    }
+
+    /// Whether the back end declares that rays through shared edges and vertices never slip
     /// through (`la` and `ga-plucker`; the reference too, by its tie rule).
     #[must_use]
-    pub fn claims_watertight(self) -> bool {
-        matches!(self, Subject::Exact | Subject::Kernel(Backend::La | Backend::GaPlucker, _))
+    pub const fn claims_watertight(self) -> bool {
+        self.guarantees().watertight
     }
 
     /// Runs `job` with this subject's intersector.
@@ -445,17 +451,21 @@ mod tests {
 
     #[test]
     fn subjects_cover_every_backend() {
-        // Fails to compile when a back end is added without being listed in BACKENDS.
-        let listed = |b: Backend| match b {
-            Backend::La | Backend::LaMt | Backend::Ga | Backend::GaReport | Backend::GaPlucker => {
-                BACKENDS.contains(&b)
+        // Each back end of the registry once per precision, named by its kernel, then the
+        // reference: checked against the registry and against what the kernels run say.
+        let all = Subject::all();
+        assert_eq!(all.len(), 2 * Backend::ALL.len() + 1);
+        for (i, p) in Precision::ALL.into_iter().enumerate() {
+            let chunk = &all[i * Backend::ALL.len()..(i + 1) * Backend::ALL.len()];
+            for (s, b) in chunk.iter().zip(Backend::ALL) {
+                assert_eq!(*s, Subject::Kernel(b, p));
+                assert_eq!((s.name(), s.precision()), (b.name(), p));
             }
-        };
-        assert!(BACKENDS.iter().all(|&b| listed(b)));
-        let names: Vec<&str> = Subject::all().iter().map(|s| s.name()).collect();
-        assert_eq!(names.len(), 11);
+        }
+        let names: Vec<&str> = all.iter().map(|s| s.name()).collect();
         assert_eq!(&names[..5], ["la", "la-mt", "ga", "ga-report", "ga-plucker"]);
-        assert_eq!(names[10], "exact");
+        assert_eq!(*names.last().unwrap(), "exact");
+        assert!(Subject::Exact.claims_watertight() && Subject::Exact.guarantees().exact);
         assert!(Subject::Kernel(Backend::GaPlucker, Precision::F32).claims_watertight());
         assert!(!Subject::Kernel(Backend::LaMt, Precision::F64).claims_watertight());
     }

@@ -1,7 +1,7 @@
 //! The suite: which rays, how many, and the rows they give for every back end.
 
+use backends::{Job, Precision};
 use intersect::{Intersector, Ray, Triangle};
-use raytrace::{Job, Precision};
 use render::accel::Accel;
 
 use super::degenerate::soup;

@@ -113,7 +113,7 @@
 mod dyadic;
 pub mod predicates;
 
-use intersect::{Intersector, Ray, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 
 use crate::dyadic::{Dyadic, det3, sub3};
 use crate::predicates::{
@@ -183,6 +183,9 @@ impl Intersector for Exact {
     type Prim = ExactTriangle;
     type RayData = ();
     const NAME: &'static str = "exact";
+    const ALGEBRA: Algebra = Algebra::La;
+    const METHOD: Method = Method::Watertight;
+    const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: true };
 
     fn prepare(&self, tri: &Triangle<f64>) -> ExactTriangle {
         // `is_degenerate` also reports non-finite triangles as degenerate.

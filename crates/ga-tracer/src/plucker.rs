@@ -129,7 +129,7 @@
 use core::marker::PhantomData;
 
 use ga::g3::Vector;
-use intersect::{Intersector, Ray, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 use robust::{Coord, orient2d};
 
 use crate::lanes;
@@ -194,6 +194,9 @@ impl<T: GaReal> Intersector for GaPlucker<T> {
     type Prim = PluckerPrim<T>;
     type RayData = PluckerRay<T>;
     const NAME: &'static str = "ga-plucker";
+    const ALGEBRA: Algebra = Algebra::G3;
+    const METHOD: Method = Method::Watertight;
+    const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> PluckerPrim<T> {
         let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };

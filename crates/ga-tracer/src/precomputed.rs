@@ -121,7 +121,7 @@
 use core::marker::PhantomData;
 
 use ga::g3::Vector;
-use intersect::{Intersector, Ray, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 
 use crate::real::private::Float;
 use crate::{GaReal, is_degenerate};
@@ -232,6 +232,9 @@ impl<T: GaReal> Intersector for Ga<T> {
     type Prim = GaPrim<T>;
     type RayData = ();
     const NAME: &'static str = "ga";
+    const ALGEBRA: Algebra = Algebra::G3;
+    const METHOD: Method = Method::Frame;
+    const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> GaPrim<T> {
         GaPrim::new(tri)

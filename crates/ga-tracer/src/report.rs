@@ -55,7 +55,7 @@ use core::marker::PhantomData;
 
 use ga::g3::Vector;
 use ga::g3::geometry::{Line, Plane};
-use intersect::{Intersector, Ray, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 
 use crate::real::private::Float;
 use crate::{GaReal, is_degenerate};
@@ -103,6 +103,9 @@ impl<T: GaReal> Intersector for GaReport<T> {
     type Prim = ReportPrim<T>;
     type RayData = ();
     const NAME: &'static str = "ga-report";
+    const ALGEBRA: Algebra = Algebra::G3;
+    const METHOD: Method = Method::Report;
+    const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> ReportPrim<T> {
         let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };

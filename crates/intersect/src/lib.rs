@@ -1,12 +1,13 @@
 //! The seam between the renderer and its ray-triangle back ends.
 //!
-//! This crate holds plain data ([`Ray`], [`Triangle`], [`Hit`]) and one trait,
+//! This crate holds plain data ([`Ray`], [`Triangle`], [`Hit`], and [`Algebra`], [`Method`],
+//! [`Guarantees`] by which a kernel describes itself) and one trait,
 //! [`Intersector`]. The renderer (`render`) is generic over it and knows no back end; the back
 //! ends (`la-tracer` with glam, `ga-tracer` with geometric algebra) implement it and know no
 //! renderer. Nothing else lives here.
 //!
 //! ```
-//! use intersect::{Intersector, Ray, Triangle, TriangleHit};
+//! use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 //!
 //! /// A toy back end: the plane z = 0 restricted to the triangle, rays along +z only.
 //! struct Toy;
@@ -16,6 +17,10 @@
 //!     type Prim = Triangle<f64>;
 //!     type RayData = ();
 //!     const NAME: &'static str = "toy";
+//!     // The plane, then the point tested against the edges; no promise beyond the contract.
+//!     const ALGEBRA: Algebra = Algebra::La;
+//!     const METHOD: Method = Method::Report;
+//!     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 //!
 //!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
 //!         *tri
@@ -60,6 +65,10 @@
 //!   there is one and may skip the barycentrics. The default `occludes` calls `intersect`.
 //! - **f32 and f64.** Every type is generic over [`Real`], implemented for `f32` and `f64`
 //!   only, so one renderer serves both precisions of every back end.
+//! - **Kernels describe themselves.** [`Intersector::ALGEBRA`], [`Intersector::METHOD`] and
+//!   [`Intersector::GUARANTEES`] are declared by each kernel, with no defaults, so that the
+//!   registry of back ends (crate `backends`), the benches and the tests read what a kernel is
+//!   from the kernel instead of keeping lists of names.
 //! - **Plain data across the seam.** Points are `[T; 3]`: no glam or GA type leaks through,
 //!   and neither back end depends on the other's vector types.
 
@@ -70,6 +79,83 @@ use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 #[cfg(feature = "conformance")]
 pub mod conformance;
+
+/// The algebra a kernel is written in ([`Intersector::ALGEBRA`]).
+///
+/// `Pga` and `Cga` have no kernel yet; they are here so that the projective and conformal
+/// back ends to come need only their kernel and a registry entry, and so that code sorting
+/// back ends by algebra (GA against linear algebra) already says where they go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Algebra {
+    /// Linear algebra: vectors, cross and dot products, determinants (`la`).
+    La,
+    /// The geometric algebra G(3,0,0) of Euclidean 3-space (`g3`).
+    G3,
+    /// Projective geometric algebra G(3,0,1) (`pga`); no kernel yet.
+    Pga,
+    /// Conformal geometric algebra G(4,1,0) (`cga`); no kernel yet.
+    Cga,
+}
+
+impl Algebra {
+    /// The short name used in tables: `"la"`, `"g3"`, `"pga"` or `"cga"`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Algebra::La => "la",
+            Algebra::G3 => "g3",
+            Algebra::Pga => "pga",
+            Algebra::Cga => "cga",
+        }
+    }
+
+    /// Whether this is a geometric algebra (every algebra but [`Algebra::La`]): the back ends
+    /// the project compares with linear algebra.
+    #[must_use]
+    pub const fn is_geometric(self) -> bool {
+        !matches!(self, Algebra::La)
+    }
+}
+
+/// The ray-triangle algorithm a kernel implements ([`Intersector::METHOD`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// The triangle's plane first, then the point where the ray meets it tested against the
+    /// edges, everything per ray (the report's method as written).
+    Report,
+    /// Moller-Trumbore (1997): Cramer's rule on the ray and two edges, barycentrics first.
+    MollerTrumbore,
+    /// The plane and the reciprocal frame of two edges precomputed per triangle, so that each
+    /// edge test is one inner product giving a barycentric coordinate.
+    Frame,
+    /// Edge functions decided as the signs of the ray's signed volumes with the edges (in a
+    /// frame of the ray), exactly antisymmetric, with a tie rule for exact zeros: no cracks.
+    Watertight,
+}
+
+impl Method {
+    /// The short name used in tables: `"report"`, `"mt"`, `"frame"` or `"watertight"`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Method::Report => "report",
+            Method::MollerTrumbore => "mt",
+            Method::Frame => "frame",
+            Method::Watertight => "watertight",
+        }
+    }
+}
+
+/// What a kernel promises beyond the [`Intersector`] contract ([`Intersector::GUARANTEES`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Guarantees {
+    /// A ray through an edge or vertex shared by consistently oriented triangles (identical
+    /// vertex values in each) hits exactly one of them: no cracks, no double hits.
+    pub watertight: bool,
+    /// Hit or miss is decided exactly for the values given, and `t`, `u`, `v` are correctly
+    /// rounded (the reference the others are judged against).
+    pub exact: bool,
+}
 
 /// A floating-point scalar: implemented for `f32` and `f64`.
 pub trait Real:
@@ -304,6 +390,12 @@ pub trait Intersector: Sync + Send {
     type RayData: Copy + Send + Sync;
     /// A short name for tables and command lines (`"la"`, `"ga"`, ...).
     const NAME: &'static str;
+    /// The algebra the kernel is written in.
+    const ALGEBRA: Algebra;
+    /// The ray-triangle algorithm the kernel implements.
+    const METHOD: Method;
+    /// What the kernel promises beyond the trait's contract.
+    const GUARANTEES: Guarantees;
 
     /// Precomputes what the kernel needs of one triangle.
     fn prepare(&self, tri: &Triangle<Self::Real>) -> Self::Prim;

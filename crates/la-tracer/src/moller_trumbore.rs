@@ -50,7 +50,7 @@
 
 use core::marker::PhantomData;
 
-use intersect::{Intersector, Ray, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 
 use crate::{GlamReal, is_degenerate};
 
@@ -95,6 +95,9 @@ impl<T: GlamReal> Intersector for MollerTrumbore<T> {
     type Prim = MtPrim<T>;
     type RayData = ();
     const NAME: &'static str = "la-mt";
+    const ALGEBRA: Algebra = Algebra::La;
+    const METHOD: Method = Method::MollerTrumbore;
+    const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> MtPrim<T> {
         let a = T::load(tri.a);

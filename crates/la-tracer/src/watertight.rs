@@ -87,7 +87,7 @@
 
 use core::marker::PhantomData;
 
-use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
 use crate::{GlamReal, is_degenerate};
 
@@ -146,6 +146,9 @@ impl<T: GlamReal> Intersector for Watertight<T> {
     type Prim = WatertightPrim<T>;
     type RayData = WatertightRay<T>;
     const NAME: &'static str = "la";
+    const ALGEBRA: Algebra = Algebra::La;
+    const METHOD: Method = Method::Watertight;
+    const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> WatertightPrim<T> {
         // A degenerate triangle becomes three copies of `a`: every edge function is then

@@ -1,24 +1,6 @@
 //! Glue for the command-line programs `raytrace` (render a mesh to an image) and `raycast`
-//! (trace an array of rays): choosing the back end once, timing figures, and the few parsers
-//! the programs share. The work itself is in `render` and the back ends.
-//!
-//! ```
-//! use intersect::Intersector;
-//! use raytrace::{Backend, Job, Precision, dispatch};
-//!
-//! /// A job that only reports which kernel it was given.
-//! struct Name;
-//!
-//! impl Job for Name {
-//!     type Output = &'static str;
-//!     fn run<I: Intersector + 'static>(self, _intersector: I) -> &'static str {
-//!         I::NAME
-//!     }
-//! }
-//!
-//! assert_eq!(dispatch(Backend::La, Precision::F32, Name), "la");
-//! assert_eq!(dispatch(Backend::LaMt, Precision::F64, Name), "la-mt");
-//! ```
+//! (trace an array of rays): timing figures and the few parsers the programs share. The work
+//! itself is in `render` and the back ends, which the programs choose through `backends`.
 
 #![deny(missing_docs)]
 
@@ -33,86 +15,12 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use anyhow::Context as _;
-use ga_tracer::{Ga, GaPlucker, GaReport};
-use intersect::Intersector;
-use la_tracer::{MollerTrumbore, Watertight};
+use backends::Precision;
 use render::output::{AtomicFile, Written};
+use render::scene::Mesh;
 
 pub use args::{clap_exit, parse_vec3};
 pub use paths::{Named, UsageError};
-
-/// The ray-triangle back ends a program can use (`--backend`).
-///
-/// To add one: a variant here (its `--backend` name is the variant in kebab case) and one line
-/// in [`dispatch`].
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Backend {
-    /// glam, watertight kernel (Woop, Benthin, Wald 2013): no cracks between triangles.
-    #[default]
-    La,
-    /// glam, Moller-Trumbore kernel.
-    LaMt,
-    /// geometric algebra, the report's method with the per-triangle part precomputed.
-    Ga,
-    /// geometric algebra, the report's method step by step, as written.
-    GaReport,
-    /// geometric algebra, watertight edge tests as trivectors (Plucker-like).
-    GaPlucker,
-}
-
-/// The precision of rays, triangles and kernels (`--precision`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Precision {
-    /// 32-bit floats.
-    #[default]
-    F32,
-    /// 64-bit floats.
-    F64,
-}
-
-impl Precision {
-    /// `"f32"` or `"f64"`.
-    #[must_use]
-    pub const fn name(self) -> &'static str {
-        match self {
-            Precision::F32 => "f32",
-            Precision::F64 => "f64",
-        }
-    }
-}
-
-/// Work to be done with one back end, whichever it is: [`dispatch`] picks the back end from
-/// the command line once, and `run` is then compiled for each back end (static dispatch all
-/// the way down to the kernel).
-pub trait Job {
-    /// What the work produces.
-    type Output;
-    /// Does the work with `intersector`.
-    fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output;
-}
-
-/// Runs `job` with the back end named by `backend` and `precision`.
-pub fn dispatch<J: Job>(backend: Backend, precision: Precision, job: J) -> J::Output {
-    let f64 = precision == Precision::F64;
-    match backend {
-        Backend::La => either(f64, job, Watertight::<f32>::new(), Watertight::<f64>::new()),
-        Backend::LaMt => {
-            either(f64, job, MollerTrumbore::<f32>::new(), MollerTrumbore::<f64>::new())
-        }
-        Backend::Ga => either(f64, job, Ga::<f32>::new(), Ga::<f64>::new()),
-        Backend::GaReport => either(f64, job, GaReport::<f32>::new(), GaReport::<f64>::new()),
-        Backend::GaPlucker => either(f64, job, GaPlucker::<f32>::new(), GaPlucker::<f64>::new()),
-    }
-}
-
-/// `job` run with `b` if `second`, else with `a`.
-fn either<J: Job, A, B>(second: bool, job: J, a: A, b: B) -> J::Output
-where
-    A: Intersector + 'static,
-    B: Intersector + 'static,
-{
-    if second { job.run(b) } else { job.run(a) }
-}
 
 /// How long each part of a run took.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -263,6 +171,26 @@ pub fn start_run(
     signals::remove_outputs_on_interrupt(outputs.first().map_or(Path::new("output"), |o| o.path))
 }
 
+/// Loads the mesh for a run in `precision`.
+///
+/// # Errors
+///
+/// The loader's errors; and, for `f32`, a vertex coordinate beyond f32's range (it would
+/// round to infinity and the triangles through it would vanish without a word).
+pub fn load_mesh(path: &Path, precision: Precision) -> anyhow::Result<Mesh> {
+    let mesh = Mesh::load(path)?;
+    if precision == Precision::F32
+        && let Some((_, value)) = mesh.first_coordinate_beyond(f64::from(f32::MAX))
+    {
+        anyhow::bail!(
+            "{}: vertex coordinate {value:e} is beyond f32's range (about 3.4e38): \
+             use --precision f64",
+            path.display()
+        );
+    }
+    Ok(mesh)
+}
+
 /// Creates the `--stats` file early if one was asked for, with the file named in the error.
 ///
 /// # Errors
@@ -359,29 +287,5 @@ mod tests {
         assert!(s.summary().contains("write 6.0 ms, total 520.0 ms"), "{}", s.summary());
         let z = Stats::new(1, 1, Timings::default(), "la", Precision::F32, 1);
         assert!(z.mrays_per_s.is_finite());
-    }
-
-    #[test]
-    fn every_backend_and_precision_dispatches() {
-        struct Probe;
-        impl Job for Probe {
-            type Output = (&'static str, u32);
-            fn run<I: Intersector + 'static>(self, _: I) -> (&'static str, u32) {
-                (I::NAME, <I::Real as intersect::Real>::MANTISSA_DIGITS)
-            }
-        }
-        assert_eq!(dispatch(Backend::La, Precision::F32, Probe), ("la", 24));
-        assert_eq!(dispatch(Backend::La, Precision::F64, Probe), ("la", 53));
-        assert_eq!(dispatch(Backend::LaMt, Precision::F32, Probe), ("la-mt", 24));
-        assert_eq!(dispatch(Backend::LaMt, Precision::F64, Probe), ("la-mt", 53));
-        assert_eq!(dispatch(Backend::Ga, Precision::F32, Probe), ("ga", 24));
-        assert_eq!(dispatch(Backend::GaReport, Precision::F64, Probe), ("ga-report", 53));
-        assert_eq!(dispatch(Backend::GaPlucker, Precision::F32, Probe), ("ga-plucker", 24));
-        // Each variant's --backend name is its kernel's NAME.
-        use clap::ValueEnum as _;
-        for b in Backend::value_variants() {
-            let name = b.to_possible_value().unwrap().get_name().to_owned();
-            assert_eq!(dispatch(*b, Precision::F64, Probe).0, name);
-        }
     }
 }

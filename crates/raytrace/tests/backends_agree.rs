@@ -1,5 +1,5 @@
 //! Every back end, in both precisions, renders the same images: written once, run for every
-//! back end through [`raytrace::dispatch`] (ripgrep's `SearcherTester` habit).
+//! back end through [`backends::dispatch`] (ripgrep's `SearcherTester` habit).
 //!
 //! Each scene is rendered by every configuration (5 back ends x 2 precisions) in `alpha` mode
 //! (any-hit queries), `depth` and `prim` mode, and traced pixel by pixel with
@@ -33,12 +33,12 @@
 
 mod common;
 
+use backends::{Backend, Precision};
 use common::{
     AllHits, BLACK, BLUE, Config, LEGEND, RED, Scene, Traced, WHITE, YELLOW, camera, edge_distance,
     passes_through, plane_hit, relative_difference, trace_all, write_diff_image,
 };
 use intersect::{Hit, Ray};
-use raytrace::{Backend, Precision};
 use render::camera::Camera;
 
 /// How near an edge a ray must pass for two back ends to be allowed to disagree about it,
@@ -160,7 +160,7 @@ fn agree(scene: &Scene, bvh_stride: usize, rules: &Rules) -> Vec<Traced> {
         .iter()
         .map(|t| {
             let job = AllHits { mesh: &scene.mesh, rays: &rays };
-            raytrace::dispatch(t.config.backend, t.config.precision, job)
+            backends::dispatch(t.config.backend, t.config.precision, job)
         })
         .collect();
     let kernel_hits = |config: usize, p: usize| -> &[(u32, f64)] {
@@ -315,9 +315,9 @@ fn la_and_ga(a: Config, b: Config) -> bool {
         && matches!((a.backend, b.backend), (Backend::La, Backend::Ga) | (Backend::Ga, Backend::La))
 }
 
-/// Both back ends watertight (`la`, `ga-plucker`).
+/// Both back ends watertight (`la`, `ga-plucker`: their kernels' guarantees).
 fn both_watertight(a: Config, b: Config) -> bool {
-    let watertight = |c: Config| matches!(c.backend, Backend::La | Backend::GaPlucker);
+    let watertight = |c: Config| c.backend.guarantees().watertight;
     watertight(a) && watertight(b)
 }
 

@@ -88,11 +88,17 @@ fn table() -> Vec<Row> {
         row(Raytrace, &["sub", "o.png", "8", "8"], 1, &["sub: is a directory"]),
         row(Raytrace, &["/dev/zero", "o.png", "8", "8"], 1, &["/dev/zero: is a character device"]),
         row(Raytrace, &["fifo.obj", "o.png", "8", "8"], 1, &["fifo.obj: is a FIFO"]),
-        row(Raytrace, &["nul.obj", "o.png", "8", "8"], 1, &["nul.obj"]),
-        row(Raytrace, &["empty.obj", "o.png", "8", "8"], 1, &["empty.obj"]),
+        row(Raytrace, &["nul.obj", "o.png", "8", "8"], 1, &["nul.obj: not a text file"]),
+        row(Raytrace, &["nul.obj.gz", "o.png", "8", "8"], 1, &["nul.obj.gz"]),
+        row(Raytrace, &["empty.obj", "o.png", "8", "8"], 1, &["empty.obj: the mesh has no faces"]),
         row(Raytrace, &["m.ply", "o.png", "8", "8"], 1, &["m.ply"]),
         row(Raytrace, &["m.stl", "o.png", "8", "8"], 1, &["m.stl"]),
         row(Raytrace, &["m.glb", "o.png", "8", "8"], 1, &["m.glb"]),
+        row(Raytrace, &["m.gltf", "o.png", "8", "8"], 1, &["m.gltf"]),
+        row(Raytrace, &["m.3ds", "o.png", "8", "8"], 1, &["m.3ds: unsupported mesh format"]),
+        row(Raytrace, &["bom-bad.obj", "o.png", "8", "8"], 1, &["bom-bad.obj:7:", "normal index"]),
+        row(Raytrace, &["huge.obj", "o.png", "8", "8"], 1, &["huge.obj", "beyond f32's range"]),
+        row(Raycast, &["huge.obj", "rays.npy", "h.npy"], 1, &["huge.obj", "--precision f64"]),
         row(Raycast, &["fifo.obj", "rays.npy", "h.npy"], 1, &["fifo.obj: is a FIFO"]),
         row(Raycast, &["square.obj", "missing.npy", "h.npy"], 1, &["missing.npy: file not found"]),
         row(Raycast, &["square.obj", "sub", "h.npy"], 1, &["sub: is a directory"]),
@@ -220,7 +226,12 @@ fn fixtures(dir: &Path) {
     put("nul.npy", &[0; 256]);
     put("empty.obj", b"");
     put("empty.npy", b"");
-    for name in ["m.ply", "m.stl", "m.glb"] {
+    // A BOM, then a face naming a normal the file does not have.
+    put("bom-bad.obj", format!("\u{feff}{SQUARE}f 1//1 2//1 3//1\n").as_bytes());
+    put("huge.obj", b"v 0 0 4\nv 1e39 0 4\nv 0 1 4\nf 1 2 3\n");
+    // Not gzip at all, under a .gz name.
+    put("nul.obj.gz", b"\0\0\0\0");
+    for name in ["m.ply", "m.stl", "m.glb", "m.gltf", "m.3ds"] {
         put(name, b"this is not a mesh in any format\n");
     }
     let mut rays = Vec::new();

@@ -73,7 +73,7 @@ fn alpha_png_matches_the_analytic_square_on_every_backend_and_precision() {
     let dir = tempfile::tempdir().unwrap();
     let obj = write(dir.path(), "square.obj", SQUARE);
     let (w, h) = (48u32, 32u32);
-    let backends = ["la", "la-mt", "ga", "ga-report", "ga-plucker"];
+    let backends = backends::Backend::ALL.map(backends::Backend::name);
     for (backend, precision) in backends.iter().flat_map(|b| [(b, "f32"), (b, "f64")]) {
         let png = dir.path().join(format!("{backend}-{precision}.png"));
         let out = raytrace(&[

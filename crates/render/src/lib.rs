@@ -2,7 +2,7 @@
 //! [`Intersector`](intersect::Intersector) seam.
 //!
 //! ```
-//! use intersect::{Intersector, Ray, Triangle, TriangleHit};
+//! use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
 //! use render::accel::Accel;
 //!
 //! /// A toy back end for rays along +z: the triangle's plane must be z = const.
@@ -13,6 +13,9 @@
 //!     type Prim = Triangle<f64>;
 //!     type RayData = ();
 //!     const NAME: &'static str = "flat";
+//!     const ALGEBRA: Algebra = Algebra::La;
+//!     const METHOD: Method = Method::Report;
+//!     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 //!
 //!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
 //!         *tri

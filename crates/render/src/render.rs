@@ -178,7 +178,7 @@ fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
 mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
-    use intersect::{Ray, Triangle, TriangleHit};
+    use intersect::{Algebra, Guarantees, Method, Ray, Triangle, TriangleHit};
 
     use super::*;
     use crate::frame::Mode;
@@ -192,6 +192,9 @@ mod tests {
         type Prim = Triangle<f64>;
         type RayData = ();
         const NAME: &'static str = "reference";
+        const ALGEBRA: Algebra = Algebra::La;
+        const METHOD: Method = Method::MollerTrumbore;
+        const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 
         fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
             *tri

@@ -5,7 +5,7 @@
 use std::marker::PhantomData;
 use std::path::Path;
 
-use intersect::{Hit, Intersector, Ray, Real, Triangle, TriangleHit};
+use intersect::{Algebra, Guarantees, Hit, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 use render::accel::Accel;
@@ -69,6 +69,9 @@ impl<T: Real> Intersector for Mt<T> {
     type Prim = Triangle<T>;
     type RayData = ();
     const NAME: &'static str = "test-mt";
+    const ALGEBRA: Algebra = Algebra::La;
+    const METHOD: Method = Method::MollerTrumbore;
+    const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
 
     fn prepare(&self, tri: &Triangle<T>) -> Triangle<T> {
         *tri

@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 use std::fs;
 use std::path::Path;
 
+use backends::Backend;
 use serde::de::DeserializeOwned;
 
 use super::rows::{AccuracyRow, StabilityRow};
@@ -175,6 +176,18 @@ pub fn render(
     s
 }
 
+/// Whether `name` is a back end of the registry written in a geometric algebra (`g3` now,
+/// `pga` and `cga` later): the back ends the report's conclusion is about.
+fn geometric(name: &str) -> bool {
+    Backend::from_name(name).is_some_and(|b| b.algebra().is_geometric())
+}
+
+/// Whether `name` is a back end of the registry other than the baseline (`la`), which the
+/// cost tables compare with it.
+fn compared_with_baseline(name: &str) -> bool {
+    Backend::from_name(name).is_some_and(|b| b != Backend::BASELINE)
+}
+
 fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[ThroughputLine]>) {
     let _ = writeln!(s, "## Does the report's conclusion hold on this machine?\n");
     let _ = writeln!(
@@ -204,7 +217,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
         let _ = writeln!(s, "|---|---|---|---|---|");
         for r in &camera {
             let differ = r.differs_from_la_per_million.map(|pm| (pm * r.rays as f64 / 1e6).round());
-            if r.backend.starts_with("ga") && differ.is_some_and(|d| d > 0.0) {
+            if geometric(&r.backend) && differ.is_some_and(|d| d > 0.0) {
                 images_equal = false;
             }
             let wrong = r.wrong_triangle.map(|w| w as f64);
@@ -242,7 +255,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
             let ns = find(rows, b, p, "random").and_then(|r| r.ns_per_ray);
             let la = find(rows, "la", p, "random").and_then(|r| r.ns_per_ray);
             let ratio = ns.zip(la).map(|(a, l)| a / l);
-            if b.starts_with("ga")
+            if geometric(b)
                 && let Some(x) = ratio
             {
                 ga_ratios.push((b.to_string(), p, x));
@@ -272,7 +285,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
             let _ =
                 writeln!(s, "| back end | precision | cases | median ratio to la | min | max |");
             let _ = writeln!(s, "|---|---|---|---|---|---|");
-            for b in backends.iter().filter(|b| b.starts_with("ga") || **b == "la-mt") {
+            for b in backends.iter().filter(|b| compared_with_baseline(b)) {
                 for p in ["f32", "f64"] {
                     let ratios: Vec<f64> = lines
                         .iter()
@@ -285,7 +298,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
                     let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
                     let hi = ratios.iter().copied().fold(0.0, f64::max);
                     let m = median(ratios.clone());
-                    if b.starts_with("ga")
+                    if geometric(b)
                         && let Some(m) = m
                     {
                         tp_ratios.push((format!("{b} {p}"), m));
@@ -434,6 +447,42 @@ mod tests {
         let with_tp = render(&rows(0.0, 110.0), &[], Some(&tp));
         assert!(with_tp.contains("3.00 in f32 (median over `throughput.csv`)"), "{with_tp}");
         assert!(with_tp.contains("not for the cost"));
+    }
+
+    #[test]
+    fn every_backend_of_the_registry_reaches_the_cost_tables() {
+        // Rows and throughput lines for every back end (and the reference, which is not a
+        // back end): each back end but the baseline gets a throughput row, whatever its name.
+        let mut rows = Vec::new();
+        let mut tp = Vec::new();
+        let names = Backend::ALL.map(Backend::name);
+        for b in names.into_iter().chain(["exact"]) {
+            let mut random = row(b, "f32", "random");
+            random.ns_per_ray = Some(100.0);
+            rows.push(random);
+            tp.push(ThroughputLine {
+                backend: b.into(),
+                precision: "f32".into(),
+                scene: "bunny".into(),
+                ray_set: "primary".into(),
+                threads: "1".into(),
+                mrays_per_s: 1.0,
+                ratio_to_la: Some(1.0),
+            });
+        }
+        let text = render(&rows, &[], Some(&tp));
+        for b in names {
+            let cost_row = format!("| {b} | 100 | 1 |");
+            assert!(text.contains(&cost_row), "{b} missing from the cost table:\n{text}");
+            let tp_row = format!("| {b} | f32 | 1 | 1 | 1 | 1 |");
+            let listed = text.contains(&tp_row);
+            assert_eq!(listed, Backend::from_name(b) != Some(Backend::BASELINE), "{b}:\n{text}");
+        }
+        assert!(!text.contains("| exact | f32 | 1 |"), "the reference is not compared");
+        for b in Backend::ALL {
+            assert_eq!(geometric(b.name()), b.algebra().is_geometric());
+        }
+        assert!(!geometric("exact") && !compared_with_baseline("exact"));
     }
 
     #[test]

@@ -7,12 +7,13 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
+use backends::{Backend, Job, Precision, dispatch};
 use clap::Parser;
 use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
-use raytrace::{Backend, Job, Named, Precision, Stats, Timings, UsageError, dispatch};
+use raytrace::{Named, Stats, Timings, UsageError};
 use render::accel::Accel;
 use render::output::{AtomicFile, npy};
 use render::scene::Mesh;
@@ -96,7 +97,7 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
 
     progress.phase(format!("loading {}", cli.input.display()));
     let t = Instant::now();
-    let mesh = Mesh::load(&cli.input)?;
+    let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
 
     let job =

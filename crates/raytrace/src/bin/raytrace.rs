@@ -7,11 +7,12 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::Context as _;
+use backends::{Backend, Job, Precision, dispatch};
 use clap::{Parser, ValueEnum};
 use intersect::Intersector;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
-use raytrace::{Backend, Job, Named, Precision, Stats, Timings, UsageError, dispatch};
+use raytrace::{Named, Stats, Timings, UsageError};
 use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, MAX_SIDE, Mode};
@@ -133,7 +134,7 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let progress = Progress::new(cli.quiet);
     progress.phase(format!("loading {}", cli.input.display()));
     let t = Instant::now();
-    let mesh = Mesh::load(&cli.input)?;
+    let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
     let camera = camera(cli, &mesh)?;
 

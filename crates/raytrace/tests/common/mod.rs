@@ -1,5 +1,5 @@
 //! Shared by `backends_agree.rs` and `golden.rs`: scenes with their cameras, every back end and
-//! precision, a job that renders a scene through whichever back end [`raytrace::dispatch`]
+//! precision, a job that renders a scene through whichever back end [`backends::dispatch`]
 //! picks at run time (so each test is written once and run for all of them), `f64` geometry
 //! to judge the pixels where results differ, and diff images.
 
@@ -8,29 +8,21 @@
 
 use std::path::{Path, PathBuf};
 
-use clap::ValueEnum as _;
+use backends::{Backend, Job, Precision};
 use intersect::{Hit, Intersector, Ray, Real, Triangle};
 use rayon::prelude::*;
-use raytrace::{Backend, Job, Precision};
 use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, FrameData, Mode};
 use render::render::render;
 use render::scene::Mesh;
 
-/// Every back end, in `--backend` order.
-pub const BACKENDS: [Backend; 5] =
-    [Backend::La, Backend::LaMt, Backend::Ga, Backend::GaReport, Backend::GaPlucker];
-
-/// Both precisions.
-pub const PRECISIONS: [Precision; 2] = [Precision::F32, Precision::F64];
-
-/// Every back end in every precision.
+/// Every back end of the registry in every precision, in `--backend` order per precision.
 #[must_use]
 pub fn configs() -> Vec<Config> {
-    PRECISIONS
-        .iter()
-        .flat_map(|&precision| BACKENDS.iter().map(move |&backend| Config { backend, precision }))
+    Precision::ALL
+        .into_iter()
+        .flat_map(|precision| Backend::ALL.map(|backend| Config { backend, precision }))
         .collect()
 }
 
@@ -47,8 +39,7 @@ impl Config {
     /// `la-f32`, `ga-plucker-f64`, ... (the `--backend` name and the precision).
     #[must_use]
     pub fn name(self) -> String {
-        let backend = self.backend.to_possible_value().expect("every back end has a name");
-        format!("{}-{}", backend.get_name(), self.precision.name())
+        format!("{}-{}", self.backend.name(), self.precision.name())
     }
 
     /// The relative tolerance on a hit distance `t` for results of this precision: the
@@ -264,7 +255,7 @@ pub fn trace_all(scene: &Scene, bvh_check: &[usize]) -> Vec<Traced> {
     configs()
         .into_iter()
         .map(|config| {
-            raytrace::dispatch(config.backend, config.precision, Trace { scene, bvh_check, config })
+            backends::dispatch(config.backend, config.precision, Trace { scene, bvh_check, config })
         })
         .collect()
 }

@@ -105,6 +105,9 @@ fn ply_error(
     };
     // The crate's messages span lines (`Parse error.\n\tValue: ...`): one line here.
     let problem = text.split_whitespace().collect::<Vec<_>>().join(" ");
+    // Header errors end in the grammar's own state (` Error: ParseError { location: ...,
+    // expected: ExpectedSet { ... } }`), which tells a user nothing the first part does not.
+    let problem = problem.split(" Error: ParseError").next().unwrap_or(&problem);
     let problem = format!("invalid PLY in {what}: {problem}");
     match e.line() {
         Some(line) if text_lines => SceneError::Malformed { file: name.to_owned(), line, problem },

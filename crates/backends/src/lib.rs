@@ -1,0 +1,348 @@
+//! The registry of ray-triangle back ends: every program, bench and test that needs "each back
+//! end" reads [`Backend::ALL`] and runs work through [`dispatch`], so that no list of back
+//! ends is written anywhere else.
+//!
+//! What a back end is (its `--backend` name, [`Algebra`], [`Method`] and [`Guarantees`]) is
+//! declared by its kernel, as the consts of [`Intersector`]; the registry reads them from the
+//! kernel ([`Backend::declared`], [`Backend::name`], [`Backend::algebra`], ...) and keeps
+//! nothing of its own but the one-line description shown by `--help`.
+//!
+//! ```
+//! use backends::{Algebra, Backend, Job, Precision, dispatch};
+//! use intersect::{Intersector, Real};
+//!
+//! /// A job that reports which kernel it was given, and in which precision.
+//! struct Name;
+//!
+//! impl Job for Name {
+//!     type Output = (&'static str, u32);
+//!     fn run<I: Intersector + 'static>(self, _intersector: I) -> (&'static str, u32) {
+//!         (I::NAME, <I::Real as Real>::MANTISSA_DIGITS)
+//!     }
+//! }
+//!
+//! assert_eq!(dispatch(Backend::La, Precision::F32, Name), ("la", 24));
+//! assert_eq!(dispatch(Backend::LaMt, Precision::F64, Name), ("la-mt", 53));
+//! // Every back end, in both precisions, runs the kernel the registry names.
+//! for backend in Backend::ALL {
+//!     for precision in Precision::ALL {
+//!         assert_eq!(dispatch(backend, precision, Name).0, backend.name());
+//!     }
+//! }
+//! assert_eq!(Backend::from_name("ga-plucker"), Some(Backend::GaPlucker));
+//! assert!(Backend::ALL.iter().any(|b| b.algebra() == Algebra::G3));
+//! ```
+//!
+//! # Adding a back end
+//!
+//! 1. Write the kernel in a kernel crate (`la-tracer`, `ga-tracer`, or a new one added to this
+//!    crate's dependencies): a type generic over `f32` and `f64` with a `new()` constructor,
+//!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`
+//!    and `GUARANTEES`, and its own tests (one call per precision to the conformance checks of
+//!    `intersect`).
+//! 2. Add one entry to the `registry!` list in this file: a one-line description (the
+//!    variant's doc and the `--help` text), the variant, and the kernel's path.
+//! 3. Document it: a row in the README's back-end tables (a test fails until the rows match
+//!    [`Backend::ALL`]), and rerun the benches so that `results/` holds it (a test fails
+//!    until every table of `results/` has a row for it).
+//!
+//! The CLI's `--backend`, every bench and every test that enumerates back ends (the
+//! agreement tests, the accuracy suite and its summary, which sorts back ends by
+//! [`Algebra`]) follow from the entry.
+
+#![deny(missing_docs)]
+
+pub use intersect::{Algebra, Guarantees, Method};
+
+use intersect::Intersector;
+
+/// Declares the back ends: each entry is a one-line description, the variant and the
+/// kernel's type (generic over the precision), and becomes a variant of [`Backend`], an
+/// element of [`Backend::ALL`] and an arm of [`dispatch`].
+macro_rules! registry {
+    ($(#[doc = $help:literal] $variant:ident => $($kernel:ident)::+,)+) => {
+        /// The ray-triangle back ends a program can use (`--backend`): see [`Backend::ALL`].
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum Backend {
+            $(#[doc = $help] $variant,)+
+        }
+
+        impl Backend {
+            /// Every back end, in the order of tables and `--help`; the first is the default.
+            pub const ALL: [Backend; [$(Backend::$variant),+].len()] = [$(Backend::$variant),+];
+
+            /// What the back end's kernel declares about itself (read from its `f32`
+            /// instance; a test checks that the `f64` one declares the same).
+            #[must_use]
+            pub const fn declared(self) -> Declared {
+                match self {
+                    $(Backend::$variant => Declared::of::<$($kernel)::+<f32>>(),)+
+                }
+            }
+
+            /// The one-line description (`--help`), without its final full stop.
+            #[must_use]
+            pub fn help(self) -> &'static str {
+                let line = match self {
+                    $(Backend::$variant => $help,)+
+                };
+                let line = line.trim();
+                line.strip_suffix('.').unwrap_or(line)
+            }
+        }
+
+        /// Runs `job` with the back end named by `backend` and `precision`.
+        pub fn dispatch<J: Job>(backend: Backend, precision: Precision, job: J) -> J::Output {
+            let f64 = precision == Precision::F64;
+            match backend {
+                $(Backend::$variant => either(
+                    f64,
+                    job,
+                    $($kernel)::+::<f32>::new(),
+                    $($kernel)::+::<f64>::new(),
+                ),)+
+            }
+        }
+    };
+}
+
+registry! {
+    /// glam, watertight kernel (Woop, Benthin, Wald 2013): no cracks between triangles.
+    La => la_tracer::Watertight,
+    /// glam, Moller-Trumbore kernel.
+    LaMt => la_tracer::MollerTrumbore,
+    /// geometric algebra, the report's method with the per-triangle part precomputed.
+    Ga => ga_tracer::Ga,
+    /// geometric algebra, the report's method step by step, as written.
+    GaReport => ga_tracer::GaReport,
+    /// geometric algebra, watertight edge tests as trivectors (Plucker-like).
+    GaPlucker => ga_tracer::GaPlucker,
+}
+
+impl Backend {
+    /// The kernel's [`Intersector::NAME`]: the `--backend` name and the name in tables
+    /// (`"la"`, `"ga-plucker"`, ...).
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        self.declared().name
+    }
+
+    /// The kernel's [`Intersector::ALGEBRA`].
+    #[must_use]
+    pub const fn algebra(self) -> Algebra {
+        self.declared().algebra
+    }
+
+    /// The kernel's [`Intersector::METHOD`].
+    #[must_use]
+    pub const fn method(self) -> Method {
+        self.declared().method
+    }
+
+    /// The kernel's [`Intersector::GUARANTEES`].
+    #[must_use]
+    pub const fn guarantees(self) -> Guarantees {
+        self.declared().guarantees
+    }
+
+    /// The back end the others are compared with (the `ratio_to_la` columns of `results/`)
+    /// and the default of `--backend`.
+    pub const BASELINE: Backend = Backend::ALL[0];
+
+    /// The back end whose [`name`](Backend::name) is `name`, if any.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Backend> {
+        Backend::ALL.into_iter().find(|b| b.name() == name)
+    }
+}
+
+impl Default for Backend {
+    fn default() -> Self {
+        Backend::BASELINE
+    }
+}
+
+#[cfg(feature = "clap")]
+impl clap::ValueEnum for Backend {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Backend::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()).help(self.help()))
+    }
+}
+
+/// What a kernel declares about itself: its [`Intersector`] consts, as one value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Declared {
+    /// [`Intersector::NAME`].
+    pub name: &'static str,
+    /// [`Intersector::ALGEBRA`].
+    pub algebra: Algebra,
+    /// [`Intersector::METHOD`].
+    pub method: Method,
+    /// [`Intersector::GUARANTEES`].
+    pub guarantees: Guarantees,
+}
+
+impl Declared {
+    /// What `I` declares (also for kernels that are not a `--backend`, such as the exact
+    /// reference).
+    #[must_use]
+    pub const fn of<I: Intersector>() -> Declared {
+        Declared {
+            name: I::NAME,
+            algebra: I::ALGEBRA,
+            method: I::METHOD,
+            guarantees: I::GUARANTEES,
+        }
+    }
+}
+
+/// The precision of rays, triangles and kernels (`--precision`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Precision {
+    /// 32-bit floats.
+    #[default]
+    F32,
+    /// 64-bit floats.
+    F64,
+}
+
+impl Precision {
+    /// Both precisions, `f32` first.
+    pub const ALL: [Precision; 2] = [Precision::F32, Precision::F64];
+
+    /// `"f32"` or `"f64"`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
+
+    /// The precision whose [`name`](Precision::name) is `name`, if any.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Precision> {
+        Precision::ALL.into_iter().find(|p| p.name() == name)
+    }
+}
+
+/// Work to be done with one back end, whichever it is: [`dispatch`] picks the back end from
+/// the command line once, and `run` is then compiled for each back end (static dispatch all
+/// the way down to the kernel).
+pub trait Job {
+    /// What the work produces.
+    type Output;
+    /// Does the work with `intersector`.
+    fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output;
+}
+
+/// `job` run with `b` if `second`, else with `a`.
+fn either<J: Job, A, B>(second: bool, job: J, a: A, b: B) -> J::Output
+where
+    A: Intersector + 'static,
+    B: Intersector + 'static,
+{
+    if second { job.run(b) } else { job.run(a) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What the kernel dispatched for a back end and precision declares, and its precision.
+    struct Dispatched;
+
+    impl Job for Dispatched {
+        type Output = (Declared, u32);
+        fn run<I: Intersector + 'static>(self, _: I) -> Self::Output {
+            (Declared::of::<I>(), <I::Real as intersect::Real>::MANTISSA_DIGITS)
+        }
+    }
+
+    #[test]
+    fn every_backend_and_precision_dispatches() {
+        let name_digits = |b, p| {
+            let (declared, digits) = dispatch(b, p, Dispatched);
+            (declared.name, digits)
+        };
+        assert_eq!(name_digits(Backend::La, Precision::F32), ("la", 24));
+        assert_eq!(name_digits(Backend::La, Precision::F64), ("la", 53));
+        assert_eq!(name_digits(Backend::LaMt, Precision::F32), ("la-mt", 24));
+        assert_eq!(name_digits(Backend::LaMt, Precision::F64), ("la-mt", 53));
+        assert_eq!(name_digits(Backend::Ga, Precision::F32), ("ga", 24));
+        assert_eq!(name_digits(Backend::GaReport, Precision::F64), ("ga-report", 53));
+        assert_eq!(name_digits(Backend::GaPlucker, Precision::F32), ("ga-plucker", 24));
+    }
+
+    #[test]
+    fn the_registry_reads_what_the_dispatched_kernel_declares() {
+        for b in Backend::ALL {
+            for p in Precision::ALL {
+                let (declared, digits) = dispatch(b, p, Dispatched);
+                assert_eq!(declared, b.declared(), "{b:?} {p:?}");
+                assert_eq!(digits, if p == Precision::F32 { 24 } else { 53 });
+            }
+        }
+    }
+
+    #[test]
+    fn kernels_declare_their_algebra_method_and_guarantees() {
+        let wt = Guarantees { watertight: true, exact: false };
+        let none = Guarantees::default();
+        let expect = [
+            (Backend::La, Algebra::La, Method::Watertight, wt),
+            (Backend::LaMt, Algebra::La, Method::MollerTrumbore, none),
+            (Backend::Ga, Algebra::G3, Method::Frame, none),
+            (Backend::GaReport, Algebra::G3, Method::Report, none),
+            (Backend::GaPlucker, Algebra::G3, Method::Watertight, wt),
+        ];
+        for (b, algebra, method, guarantees) in expect {
+            assert_eq!((b.algebra(), b.method(), b.guarantees()), (algebra, method, guarantees));
+        }
+        // The reference is not a `--backend`, but declares itself the same way.
+        let exact = Declared::of::<exact_tracer::Exact>();
+        assert_eq!(exact.guarantees, Guarantees { watertight: true, exact: true });
+        assert_eq!((exact.name, exact.method), ("exact", Method::Watertight));
+    }
+
+    #[test]
+    fn names_are_unique_and_found_back() {
+        for (i, b) in Backend::ALL.into_iter().enumerate() {
+            assert_eq!(Backend::from_name(b.name()), Some(b));
+            assert!(Backend::ALL[..i].iter().all(|a| a.name() != b.name()), "{b:?}");
+            assert!(!b.help().is_empty() && !b.help().ends_with('.'), "{b:?}");
+        }
+        assert_eq!(Backend::from_name("exact"), None);
+        assert_eq!(Backend::from_name("LA"), None);
+        assert_eq!(Backend::default(), Backend::La);
+        assert_eq!(Backend::BASELINE, Backend::La);
+    }
+
+    #[test]
+    fn algebra_names_and_kinds() {
+        assert_eq!(Algebra::La.name(), "la");
+        assert!(!Algebra::La.is_geometric());
+        for a in [Algebra::G3, Algebra::Pga, Algebra::Cga] {
+            assert!(a.is_geometric(), "{a:?}");
+        }
+        assert_eq!(Method::MollerTrumbore.name(), "mt");
+    }
+
+    #[cfg(feature = "clap")]
+    #[test]
+    fn clap_values_are_the_registry() {
+        use clap::ValueEnum as _;
+        assert_eq!(Backend::value_variants(), Backend::ALL);
+        for b in Backend::ALL {
+            let value = b.to_possible_value().unwrap();
+            assert_eq!(value.get_name(), b.name());
+            assert_eq!(Backend::from_str(b.name(), false), Ok(b));
+        }
+        assert_eq!(Precision::from_str("f64", false), Ok(Precision::F64));
+    }
+}
