@@ -24,9 +24,9 @@ use std::path::Path;
 use std::time::{Duration, SystemTime};
 
 use backends::Job;
+use bvh::accel::Accel;
 use criterion::{BenchmarkGroup, Criterion, Throughput};
 use intersect::{Intersector, Ray, Triangle};
-use render::accel::Accel;
 use wedge_benches::accuracy::mesh::TriMesh;
 use wedge_benches::accuracy::plot::draw_runtime_vs_error;
 use wedge_benches::accuracy::rays::random_rays;

@@ -1,5 +1,5 @@
-//! BVH build time: triangle boxes and `render::bvh::Bvh::build` (what
-//! `render::accel::AccelStats::bvh_build` measures), `f32` and `f64`, on the Stanford bunny
+//! BVH build time: triangle boxes and `bvh::Bvh::build` (what
+//! `bvh::accel::AccelStats::bvh_build` measures), `f32` and `f64`, on the Stanford bunny
 //! (69,451 triangles) and the bunny split twice (1,111,216), one thread and all threads.
 //!
 //! The targets, single thread: 30 ms for the bunny, 0.5 s for the 1.1M mesh.
@@ -10,9 +10,9 @@ use std::hint::black_box;
 use std::thread::available_parallelism;
 use std::time::{Duration, SystemTime};
 
+use bvh::{Aabb, Bvh};
 use criterion::{Criterion, SamplingMode};
 use intersect::{Real, Triangle};
-use render::bvh::{Aabb, Bvh};
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::BuildRow;
 use wedge_benches::throughput::scenes::{BenchScene, bunny, subdivided};

@@ -41,9 +41,9 @@ use std::process::{Command, ExitCode};
 use std::time::Instant;
 
 use backends::{Backend, Job, Precision, dispatch};
+use bvh::accel::Accel;
 use intersect::{Intersector, Ray};
-use render::accel::Accel;
-use render::scene::Mesh;
+use scene::Mesh;
 use serde::Serialize;
 use wedge_benches::throughput::rays::{
     INCOHERENT_SEED, Query, RaySet, incoherent_rays, primary_rays,
@@ -110,7 +110,7 @@ impl Job for Measure<'_> {
     type Output = Vec<f64>;
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Vec<f64> {
-        let accel = Accel::from_mesh(intersector, self.mesh);
+        let accel = Accel::build(intersector, &self.mesh.triangles());
         self.sets
             .iter()
             .map(|(set, rays64)| {

@@ -2,7 +2,7 @@
 //! same rays, one thread and all threads.
 //!
 //! Scenes: the Stanford bunny (69,451 triangles), the bunny split twice (1,111,216 triangles,
-//! made at run time with `raytrace::scenes::subdivide`) and every `obj/` scene. Ray sets (see
+//! made at run time with `scene::generators::subdivide`) and every `obj/` scene. Ray sets (see
 //! `wedge_benches::throughput::rays`): 1024 x 1024 primary rays of a camera framing the mesh,
 //! closest hit and any hit; 1,000,000 incoherent rays (origins uniform in the mesh's box,
 //! directions uniform on the sphere, fixed seed), closest hit; and on the 1.1M mesh the
@@ -25,9 +25,9 @@ use std::thread::available_parallelism;
 use std::time::{Duration, SystemTime};
 
 use backends::{Backend, Job, Precision, dispatch};
+use bvh::accel::Accel;
 use criterion::{Criterion, SamplingMode, Throughput};
 use intersect::{Intersector, Ray};
-use render::accel::Accel;
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::plot::draw_throughput_svg;
 use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
@@ -100,7 +100,7 @@ impl Job for BenchBackend<'_> {
     type Output = Vec<Measured>;
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Vec<Measured> {
-        let accel = Accel::from_mesh(intersector, &self.scene.mesh);
+        let accel = Accel::build(intersector, &self.scene.mesh.triangles());
         let stats = accel.stats();
         let per_triangle = |bytes: usize| bytes as f64 / stats.triangles.max(1) as f64;
         let mut measured = Vec::new();

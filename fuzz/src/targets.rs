@@ -9,9 +9,9 @@
 //!   component is finite, and there is one normal triple per triangle.
 
 use render::output::npy;
-use render::scene::MeshFormat::{self, Glb, Gltf, Obj, Ply, Stl};
-use render::scene::memory::FROM_BYTES_MULTIPLE;
-use render::scene::{Mesh, SceneError, gz};
+use scene::MeshFormat::{self, Glb, Gltf, Obj, Ply, Stl};
+use scene::memory::FROM_BYTES_MULTIPLE;
+use scene::{Mesh, SceneError, gz};
 
 /// What a reader made of one input: `Ok` with a short description of what it read (without
 /// numbers, so that it can tell kinds of answer apart), or its error message.

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use intersect::Triangle;
-use render::scene::Mesh;
+use scene::Mesh;
 
 use super::fp::{length, round32_3, sub};
 
@@ -73,7 +73,7 @@ impl TriMesh {
         Self { name: name.to_owned(), positions: kept, triangles }
     }
 
-    /// A mesh loaded by [`render::scene::Mesh`], welded.
+    /// A mesh loaded by [`scene::Mesh`], welded.
     #[must_use]
     pub fn from_mesh(name: &str, mesh: &Mesh) -> Self {
         Self::welded(name, &mesh.positions, &mesh.triangles)
@@ -95,12 +95,12 @@ impl TriMesh {
         Ok(Self::from_mesh("bunny", &mesh))
     }
 
-    /// The project's tile grid (`obj/tiles.obj`, built by [`raytrace::scenes::tiles`]): 16 x 16
+    /// The project's tile grid (`obj/tiles.obj`, built by [`scene::generators::tiles`]): 16 x 16
     /// squares of side 1/8 in the plane z = 0, split into 512 triangles, every vertex on an
     /// exact binary lattice.
     #[must_use]
     pub fn tiles() -> Self {
-        let obj = raytrace::scenes::tiles();
+        let obj = scene::generators::tiles();
         Self::welded("tiles", &obj.positions, &obj.triangles())
     }
 

@@ -10,10 +10,10 @@
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use backends::{Backend, Guarantees, Job, Precision, dispatch};
+use bvh::accel::Accel;
 use exact_tracer::predicates::edge_sign;
 use exact_tracer::{Exact, Sign};
 use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
-use render::accel::Accel;
 
 use super::metrics::{TError, facing_sign, t_error};
 use super::rays::AimedSet;

@@ -1,8 +1,8 @@
 //! The suite: which rays, how many, and the rows they give for every back end.
 
 use backends::{Job, Precision};
+use bvh::accel::Accel;
 use intersect::{Intersector, Ray, Triangle};
-use render::accel::Accel;
 
 use super::degenerate::soup;
 use super::mesh::TriMesh;

@@ -3,7 +3,7 @@
 //!
 //! ```
 //! use wedge_benches::throughput::rays::{RaySet, incoherent_rays};
-//! use render::scene::Mesh;
+//! use scene::Mesh;
 //!
 //! let mesh = Mesh::from_obj_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "tri").unwrap();
 //! let rays = incoherent_rays(&mesh, 100, 1);

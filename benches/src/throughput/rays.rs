@@ -6,7 +6,7 @@
 
 use intersect::Ray;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
-use render::scene::Mesh;
+use scene::Mesh;
 
 use crate::SplitMix64;
 

@@ -3,8 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
-use raytrace::scenes::subdivide;
-use render::scene::Mesh;
+use scene::Mesh;
+use scene::generators::subdivide;
 
 use crate::workspace_root;
 
@@ -47,7 +47,7 @@ pub fn bunny() -> Mesh {
 }
 
 /// `mesh` with every triangle split into four at its edge midpoints, `times` times
-/// (`raytrace::scenes::subdivide`): the bunny split twice has 1,111,216 triangles.
+/// (`scene::generators::subdivide`): the bunny split twice has 1,111,216 triangles.
 #[must_use]
 pub fn subdivided(mesh: &Mesh, times: u32) -> Mesh {
     let (mut positions, mut triangles) = (mesh.positions.clone(), mesh.triangles.clone());

@@ -1,10 +1,10 @@
 //! The tracing loops the throughput bench times: one thread on the calling thread, or every
 //! thread of a rayon pool over chunks of rays.
 
+use bvh::accel::Accel;
 use intersect::{Intersector, Ray, Real};
 use rayon::ThreadPool;
 use rayon::prelude::*;
-use render::accel::Accel;
 
 use super::rays::Query;
 

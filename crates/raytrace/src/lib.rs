@@ -7,7 +7,6 @@
 pub mod args;
 pub mod paths;
 pub mod progress;
-pub mod scenes;
 pub mod signals;
 
 use std::path::Path;
@@ -17,7 +16,7 @@ use std::time::Duration;
 use anyhow::Context as _;
 use backends::Precision;
 use render::output::{AtomicFile, Written};
-use render::scene::Mesh;
+use scene::Mesh;
 
 pub use args::{clap_exit, parse_vec3};
 pub use paths::{Named, UsageError};

@@ -99,8 +99,8 @@ pub fn check_output_names(outputs: &[Named<'_>]) -> anyhow::Result<()> {
 /// for an output that exists and is not a regular file.
 pub fn check_outputs(inputs: &[Named<'_>], outputs: &[Named<'_>]) -> anyhow::Result<()> {
     for (k, out) in outputs.iter().enumerate() {
-        match render::input::regular_file_size(out.path) {
-            Ok(_) | Err(render::input::InputError::NotFound { .. }) => {}
+        match scene::input::regular_file_size(out.path) {
+            Ok(_) | Err(scene::input::InputError::NotFound { .. }) => {}
             Err(e) => bail!("{e} (the {} is written there)", out.role),
         }
         let Some(id) = identity(out.path) else { continue };
@@ -137,9 +137,9 @@ pub fn check_stats_path(path: &Path) -> anyhow::Result<()> {
         ))
         .into());
     }
-    let size = match render::input::regular_file_size(path) {
+    let size = match scene::input::regular_file_size(path) {
         Ok(size) => size,
-        Err(render::input::InputError::NotFound { .. }) => return Ok(()),
+        Err(scene::input::InputError::NotFound { .. }) => return Ok(()),
         Err(e) => bail!("{e} (the stats are written there)"),
     };
     if size > MAX_STATS_BYTES || !is_stats_file(path) {
@@ -153,7 +153,7 @@ pub fn check_stats_path(path: &Path) -> anyhow::Result<()> {
 
 /// Whether `path` holds a JSON object with every key of [`STATS_KEYS`].
 fn is_stats_file(path: &Path) -> bool {
-    let Ok(bytes) = render::input::read_file(path) else { return false };
+    let Ok(bytes) = scene::input::read_file(path) else { return false };
     match serde_json::from_slice::<serde_json::Value>(&bytes) {
         Ok(serde_json::Value::Object(map)) => STATS_KEYS.iter().all(|k| map.contains_key(*k)),
         _ => false,

@@ -3,7 +3,7 @@
 //!
 //! Each scene is rendered by every configuration (5 back ends x 2 precisions) in `alpha` mode
 //! (any-hit queries), `depth` and `prim` mode, and traced pixel by pixel with
-//! [`Accel::closest_hit`](render::accel::Accel::closest_hit) to keep `f64` distances whole.
+//! [`Accel::closest_hit`](bvh::accel::Accel::closest_hit) to keep `f64` distances whole.
 //! Then:
 //!
 //! - **Each configuration on its own**: the BVH queries equal brute force on a sample of

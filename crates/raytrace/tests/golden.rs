@@ -28,7 +28,7 @@ use common::{
     write_diff_image,
 };
 use render::camera::Camera;
-use render::scene::Mesh;
+use scene::Mesh;
 
 /// Rays passing nearer than this to an edge (in scene units, on scenes of unit size) are not
 /// judged. `f32` rounding of the ray and the vertices moves a hit point by about `1e-6` at

@@ -4,7 +4,7 @@
 //! make-scenes [--out DIR] [--check]
 //! ```
 //!
-//! The scenes are built by `raytrace::scenes`. Without `--out` the program writes to the `obj/`
+//! The scenes are built by `scene::generators`. Without `--out` the program writes to the `obj/`
 //! folder of the workspace it was built from (found at compile time), so
 //! `cargo run -p raytrace --bin make-scenes` does the right thing from any directory.
 //! `--check` writes nothing and exits with status 1, listing every file that is missing,
@@ -16,7 +16,7 @@ use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use clap::Parser;
-use raytrace::scenes::{GENERATED_HEADER, generated_files};
+use scene::generators::{GENERATED_HEADER, generated_files};
 
 /// Writes the generated test scenes (OBJ files and a README) to the workspace's obj/ folder.
 #[derive(Parser)]

@@ -8,15 +8,15 @@ use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
+use bvh::accel::Accel;
 use clap::Parser;
 use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::{Named, Stats, Timings, UsageError};
-use render::accel::Accel;
 use render::output::{AtomicFile, npy};
-use render::scene::Mesh;
+use scene::Mesh;
 
 /// Rays traced between two updates of the progress bar.
 const RAYS_PER_BLOCK: usize = 4096;
@@ -91,7 +91,7 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
 
     let progress = Progress::new(cli.quiet);
     progress.phase(format!("reading {}", cli.rays.display()));
-    let bytes = render::input::read_file(&cli.rays)?;
+    let bytes = scene::input::read_file(&cli.rays)?;
     let rays = npy::read_f64_matrix(&bytes, 6).with_context(|| cli.rays.display().to_string())?;
     drop(bytes);
 
@@ -144,7 +144,7 @@ impl Job for CastJob<'_> {
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
         self.progress.phase("building the BVH");
         let start = Instant::now();
-        let accel = Accel::from_mesh(intersector, self.mesh);
+        let accel = Accel::build(intersector, &self.mesh.triangles());
         let build = start.elapsed();
         self.progress.trace((self.rays.len() / 6) as u64);
         let start = Instant::now();

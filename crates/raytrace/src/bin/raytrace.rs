@@ -8,16 +8,16 @@ use std::time::Instant;
 
 use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
+use bvh::accel::Accel;
 use clap::{Parser, ValueEnum};
 use intersect::Intersector;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::{Named, Stats, Timings, UsageError};
-use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, MAX_SIDE, Mode};
 use render::output::{Format, ImageOutput};
-use render::scene::Mesh;
+use scene::Mesh;
 
 /// Render a triangle mesh (Wavefront OBJ) to an image, one ray per pixel.
 ///
@@ -192,11 +192,11 @@ impl Job for RenderJob<'_> {
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
         self.progress.phase("building the BVH");
         let start = Instant::now();
-        let accel = Accel::from_mesh(intersector, self.mesh);
+        let accel = Accel::build(intersector, &self.mesh.triangles());
         let build = start.elapsed();
         self.progress.trace(u64::from(self.frame.width()) * u64::from(self.frame.height()));
         let start = Instant::now();
-        render::render::render(&accel, self.mesh, self.camera, self.frame, &|n| {
+        render::trace::render_frame(&accel, self.mesh, self.camera, self.frame, &|n| {
             self.progress.inc(n as u64);
         });
         (I::NAME, build, start.elapsed())

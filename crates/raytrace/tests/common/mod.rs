@@ -9,13 +9,13 @@
 use std::path::{Path, PathBuf};
 
 use backends::{Backend, Job, Precision};
+use bvh::accel::Accel;
 use intersect::{Hit, Intersector, Ray, Real, Triangle};
 use rayon::prelude::*;
-use render::accel::Accel;
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, FrameData, Mode};
-use render::render::render;
-use render::scene::Mesh;
+use render::trace::render_frame;
+use scene::Mesh;
 
 /// Every back end of the registry in every precision, in `--backend` order per precision.
 #[must_use]
@@ -183,11 +183,11 @@ pub fn camera(eye: [f64; 3], target: [f64; 3]) -> Camera {
 pub struct Traced {
     /// Which back end and precision.
     pub config: Config,
-    /// The `alpha` frame of [`render`] (any-hit queries): whether each pixel's ray hit.
+    /// The `alpha` frame of [`render_frame`] (any-hit queries): whether each pixel's ray hit.
     pub alpha: Vec<bool>,
-    /// The `depth` frame of [`render`].
+    /// The `depth` frame of [`render_frame`].
     pub depth_frame: Vec<f32>,
-    /// The `prim` frame of [`render`].
+    /// The `prim` frame of [`render_frame`].
     pub prim_frame: Vec<u32>,
     /// [`Accel::closest_hit`] of each pixel's ray, in the back end's precision, then
     /// converted (exactly) to `f64`, so that `f64` depths keep all their digits.
@@ -213,10 +213,10 @@ impl Job for Trace<'_> {
     fn run<I: Intersector + 'static>(self, intersector: I) -> Traced {
         let s = self.scene;
         let (w, h) = (s.width, s.height);
-        let accel = Accel::from_mesh(intersector, &s.mesh);
+        let accel = Accel::build(intersector, &s.mesh.triangles());
         let frame = |mode| {
             let mut frame = Frame::new(mode, w, h).expect("a small frame");
-            render(&accel, &s.mesh, &s.camera, &mut frame, &|_| {});
+            render_frame(&accel, &s.mesh, &s.camera, &mut frame, &|_| {});
             frame.data().clone()
         };
         let FrameData::Alpha(alpha) = frame(Mode::Alpha) else { unreachable!() };

@@ -5,12 +5,12 @@
 use std::marker::PhantomData;
 use std::path::Path;
 
+use bvh::accel::Accel;
+use bvh::{Aabb, Child, MAX_DEPTH, MAX_LEAF, WIDTH};
 use intersect::{Algebra, Guarantees, Hit, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
-use render::accel::Accel;
-use render::bvh::{Aabb, Child, MAX_DEPTH, MAX_LEAF, WIDTH};
-use render::scene::Mesh;
+use scene::Mesh;
 
 /// Plain Moller-Trumbore in precision `T`, written for these tests only.
 struct Mt<T>(PhantomData<T>);
@@ -431,11 +431,11 @@ fn real_meshes_match_the_oracle() {
         let mesh = shared_mesh(name);
         let rays = rays_around(&mesh, &mut rng, ray_count);
         let tris = mesh.triangles::<f64>();
-        let accel = Accel::from_mesh(mt::<f64>(), &mesh);
+        let accel = Accel::build(mt::<f64>(), &mesh.triangles());
         check_invariants(&accel, &tris);
         let hits = rays.iter().filter(|r| check_ray(&accel, &tris, r)).count();
         let tris32 = mesh.triangles::<f32>();
-        let accel32 = Accel::from_mesh(mt::<f32>(), &mesh);
+        let accel32 = Accel::build(mt::<f32>(), &mesh.triangles());
         check_invariants(&accel32, &tris32);
         let hits32 = rays.iter().filter(|r| check_ray(&accel32, &tris32, &r.cast())).count();
         assert!(hits > ray_count / 5 && hits32 > ray_count / 5, "{name}: {hits} {hits32}");
@@ -449,8 +449,8 @@ fn build_does_not_depend_on_the_thread_count() {
     let mesh = shared_mesh("stanford-bunny.obj");
     fn same<T: Real>(tris: &[Triangle<T>]) {
         let pool = |n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
-        let one = pool(1).install(|| render::bvh::Bvh::from_triangles(tris));
-        let four = pool(4).install(|| render::bvh::Bvh::from_triangles(tris));
+        let one = pool(1).install(|| bvh::Bvh::from_triangles(tris));
+        let four = pool(4).install(|| bvh::Bvh::from_triangles(tris));
         assert_eq!(one.order(), four.order());
         assert_eq!(one.node_count(), four.node_count());
         for i in 0..one.node_count() {

@@ -380,7 +380,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bvh::node::leaf_ref;
+    use crate::node::leaf_ref;
 
     fn node_with(boxes: &[([f32; 3], [f32; 3])]) -> Node {
         let mut node = Node::EMPTY;

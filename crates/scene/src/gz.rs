@@ -22,8 +22,8 @@ const CHUNK: usize = 1 << 20;
 /// let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
 /// gz.write_all(&[b'#'; 10_000])?;
 /// let gz = gz.finish()?;
-/// assert_eq!(render::scene::gz::gunzip(&gz, 10_000, "a.obj.gz")?.len(), 10_000);
-/// let err = render::scene::gz::gunzip(&gz, 9_999, "a.obj.gz").unwrap_err();
+/// assert_eq!(scene::gz::gunzip(&gz, 10_000, "a.obj.gz")?.len(), 10_000);
+/// let err = scene::gz::gunzip(&gz, 9_999, "a.obj.gz").unwrap_err();
 /// assert!(err.to_string().starts_with("a.obj.gz: too large for memory: "));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

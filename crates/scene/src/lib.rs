@@ -33,10 +33,21 @@
 //! truncated file or an absurd count is an error, never a large allocation. See
 //! [`Mesh::from_bytes`] for the memory bound and [`Mesh::load`] for the check against the
 //! memory available.
+//!
+//! # Other modules
+//!
+//! - [`input`]: reading input files: regular files only, bounded, without aborting (the
+//!   readers' file access, also used by the programs for their other inputs).
+//! - [`generators`]: the project's own small test scenes (the `obj/` folder) and midpoint
+//!   [`subdivide`](generators::subdivide) for the benches' large meshes.
+
+#![deny(missing_docs)]
 
 mod check;
+pub mod generators;
 pub mod gltf;
 pub mod gz;
+pub mod input;
 pub mod memory;
 pub mod obj;
 pub mod ply;
@@ -46,7 +57,7 @@ use std::path::Path;
 
 use intersect::{Real, Triangle};
 
-use crate::bvh::Aabb;
+use bvh::Aabb;
 
 /// Why a scene could not be loaded. Each message is one line naming the file.
 #[derive(Debug, thiserror::Error)]
@@ -202,12 +213,12 @@ impl MeshFormat {
     /// gzip-compressed (`.obj.gz`, `.ply.gz`).
     ///
     /// ```
-    /// use render::scene::MeshFormat;
+    /// use scene::MeshFormat;
     /// use std::path::Path;
     /// assert_eq!(MeshFormat::from_path(Path::new("a/Bunny.PLY.gz"))?, (MeshFormat::Ply, true));
     /// assert_eq!(MeshFormat::from_path(Path::new("x.glb"))?, (MeshFormat::Glb, false));
     /// assert!(MeshFormat::from_path(Path::new("x.stl.gz")).is_err());
-    /// # Ok::<(), render::scene::SceneError>(())
+    /// # Ok::<(), scene::SceneError>(())
     /// ```
     ///
     /// # Errors
@@ -355,11 +366,11 @@ impl Mesh {
     ///
     /// ```
     /// let text = "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nv 0 0 -1e40\nf 1 2 3\n";
-    /// let mesh = render::scene::Mesh::from_obj_str(text, "big.obj")?;
+    /// let mesh = scene::Mesh::from_obj_str(text, "big.obj")?;
     /// // Vertex 3 (-1e40) is not used by a triangle.
     /// assert_eq!(mesh.first_coordinate_beyond(f32::MAX.into()), Some((1, 1e39)));
     /// assert_eq!(mesh.first_coordinate_beyond(1e40), None);
-    /// # Ok::<(), render::scene::SceneError>(())
+    /// # Ok::<(), scene::SceneError>(())
     /// ```
     #[must_use]
     pub fn first_coordinate_beyond(&self, limit: f64) -> Option<(usize, f64)> {

@@ -1,4 +1,4 @@
-//! The committed `obj/` folder is exactly what `raytrace::scenes` generates, and the scenes
+//! The committed `obj/` folder is exactly what `scene::generators` generates, and the scenes
 //! have the geometry their documentation promises.
 //!
 //! Geometry is checked on meshes read back from the written OBJ text by a small parser of this
@@ -8,7 +8,7 @@
 use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
-use raytrace::scenes::{
+use scene::generators::{
     self, Face, ObjMesh, ObjObject, SCENES, generated_files, subdivide, to_obj_string, turn_sin_cos,
 };
 
@@ -53,7 +53,7 @@ fn obj_folder_stays_small() {
 fn written_text_reads_back_to_the_built_mesh() {
     for scene in &SCENES {
         let text = scene.obj_text();
-        assert!(text.starts_with(scenes::GENERATED_HEADER), "{}", scene.file_name);
+        assert!(text.starts_with(generators::GENERATED_HEADER), "{}", scene.file_name);
         assert_eq!(parse_obj(&text), (scene.build)(), "{}", scene.file_name);
         for line in text.lines().filter(|l| l.starts_with("v ") || l.starts_with("vn ")) {
             for number in line.split_whitespace().skip(1) {

@@ -3,8 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
-use render::input::InputError;
-use render::scene::{Mesh, SceneError};
+use scene::input::InputError;
+use scene::{Mesh, SceneError};
 
 /// Writes `text` to `name` in a fresh temporary directory and loads it.
 fn load_text(name: &str, text: &str) -> (Result<Mesh, SceneError>, tempfile::TempDir) {
@@ -352,7 +352,7 @@ fn coordinates_beyond_a_limit_are_found_among_used_vertices() {
 
 #[test]
 fn a_mesh_too_large_for_memory_is_refused_before_reading() {
-    if render::scene::memory::available().is_none() {
+    if scene::memory::available().is_none() {
         return; // no MemAvailable on this system: nothing is refused up front
     }
     // A sparse 4 TB file: no disk space used, and far beyond any machine's memory.

@@ -15,8 +15,8 @@
 //! let dir = tempfile::tempdir()?;
 //! let path = dir.path().join("a.obj");
 //! std::fs::write(&path, "v 0 0 0\n")?;
-//! assert_eq!(render::input::read_file(&path)?, b"v 0 0 0\n");
-//! let err = render::input::read_file(dir.path()).unwrap_err();
+//! assert_eq!(scene::input::read_file(&path)?, b"v 0 0 0\n");
+//! let err = scene::input::read_file(dir.path()).unwrap_err();
 //! assert!(err.to_string().ends_with("is a directory, not a file"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```

@@ -7,8 +7,8 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use render::scene::memory::FROM_BYTES_MULTIPLE;
-use render::scene::{Mesh, MeshFormat};
+use scene::memory::FROM_BYTES_MULTIPLE;
+use scene::{Mesh, MeshFormat};
 
 /// The system allocator, counting the bytes live and their peak.
 struct Counting;

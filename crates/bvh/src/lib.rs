@@ -3,12 +3,14 @@
 //!
 //! The tree knows nothing about triangles or kernels: it is built from one [`Aabb`] per
 //! primitive and reports, during traversal, ranges of *slots* (positions in
-//! [`Bvh::order`]) whose boxes the ray may touch. [`crate::accel::Accel`] stores its
-//! primitives in slot order and runs the kernel on those ranges.
+//! [`Bvh::order`]) whose boxes the ray may touch. [`accel::Accel`] stores a back end's
+//! prepared triangles in slot order and runs its kernel on those ranges: closest-hit and
+//! any-hit queries, with brute-force references. The crate needs only the
+//! [`Intersector`](intersect::Intersector) seam and rayon: no file format, no image.
 //!
 //! ```
 //! use intersect::Ray;
-//! use render::bvh::{Aabb, Bvh};
+//! use bvh::{Aabb, Bvh};
 //!
 //! // Three unit boxes along x.
 //! let boxes: Vec<Aabb<f32>> = (0..3)
@@ -42,8 +44,9 @@
 //! # Build
 //!
 //! Binned surface area heuristic ([`BINS`] bins per axis over the centroid bounds, all three
-//! axes tried, a split's traversal costing three primitive tests); each node splits its largest child until it has eight, so the tree is what a
-//! binary SAH tree collapsed greedily would be, without building the binary tree. Everything
+//! axes tried, a split's traversal costing three primitive tests); each node splits its
+//! largest child until it has eight, so the tree is what a binary SAH tree collapsed greedily
+//! would be, without building the binary tree. Everything
 //! is partitioned in place in one array, with no allocation per node; subtrees of many
 //! primitives are built in parallel on rayon's current thread pool. Depth never exceeds
 //! [`MAX_DEPTH`] binary splits: near that depth the builder switches from SAH to median
@@ -97,7 +100,10 @@
 //! [`Intersector`](intersect::Intersector) contract says degenerate triangles are never hit.
 //! A ray with a non-finite origin or direction component meets no box.
 
+#![deny(missing_docs)]
+
 mod aabb;
+pub mod accel;
 mod build;
 mod node;
 mod simd;

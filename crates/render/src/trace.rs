@@ -1,7 +1,7 @@
 //! The render loop: one primary ray per pixel, traced in parallel tiles, generic over the back
 //! end.
 //!
-//! [`render`] fills a [`Frame`] for its [`Mode`](crate::frame::Mode):
+//! [`render_frame`] fills a [`Frame`] for its [`Mode`](crate::frame::Mode):
 //!
 //! - `alpha`: [`Accel::any_hit`] with `t_max = inf` (the report's image). No hit point is
 //!   computed at all.
@@ -25,17 +25,17 @@
 //! The image is cut into bands of at most [`TILE`] rows, each traced as a row of
 //! `TILE x TILE` tiles (neighbouring rays visit the same BVH nodes, which keeps them in
 //! cache). Bands are shared among the threads of the current rayon pool: the caller picks the
-//! thread count by running [`render`] inside `ThreadPool::install`. After each tile,
+//! thread count by running [`render_frame`] inside `ThreadPool::install`. After each tile,
 //! `progress` is called with the number of pixels just finished (from any thread), so a
 //! caller can drive a progress bar; the calls add up to `width * height`.
 
 use intersect::{Intersector, Real};
 use rayon::prelude::*;
 
-use crate::accel::Accel;
 use crate::camera::Camera;
 use crate::frame::{Frame, FrameData};
-use crate::scene::Mesh;
+use bvh::accel::Accel;
+use scene::Mesh;
 
 /// Side of the square tiles traced together, in pixels.
 pub const TILE: u32 = 16;
@@ -58,12 +58,12 @@ pub fn light_direction(camera: &Camera) -> [f64; 3] {
 /// [module documentation](self).
 ///
 /// `accel` must have been built from `mesh`'s triangles in mesh order
-/// ([`Accel::from_mesh`]): hits name triangles by mesh index.
+/// (`Accel::build(intersector, &mesh.triangles())`): hits name triangles by mesh index.
 ///
 /// # Panics
 ///
 /// If `accel` and `mesh` have different numbers of triangles.
-pub fn render<I: Intersector>(
+pub fn render_frame<I: Intersector>(
     accel: &Accel<I>,
     mesh: &Mesh,
     camera: &Camera,
@@ -239,10 +239,10 @@ mod tests {
     }
 
     fn run(mesh: &Mesh, mode: Mode, w: u32, h: u32) -> Frame {
-        let accel = Accel::from_mesh(Reference, mesh);
+        let accel = Accel::build(Reference, &mesh.triangles());
         let mut frame = Frame::new(mode, w, h).unwrap();
         let done = AtomicUsize::new(0);
-        render(&accel, mesh, &Camera::origin(), &mut frame, &|n| {
+        render_frame(&accel, mesh, &Camera::origin(), &mut frame, &|n| {
             done.fetch_add(n, Ordering::Relaxed);
         });
         assert_eq!(done.into_inner(), (w * h) as usize, "progress adds up to the pixel count");

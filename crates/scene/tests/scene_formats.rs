@@ -5,7 +5,7 @@
 use std::io::Write as _;
 use std::path::Path;
 
-use render::scene::{Mesh, MeshFormat, SceneError};
+use scene::{Mesh, MeshFormat, SceneError};
 
 /// A small test mesh: a unit square (two triangles) and a pentagon lifted to z = 1, with
 /// coordinates exact in f32, and a normal per vertex.
@@ -386,7 +386,7 @@ fn gzip_refusals_corrupt_truncated_and_bombs() {
     let bomb = enc.finish().unwrap();
     assert!(bomb.len() < 2 << 20, "{}", bomb.len());
     let start = std::time::Instant::now();
-    let e = render::scene::gz::gunzip(&bomb, 64 << 20, "bomb.obj.gz").unwrap_err();
+    let e = scene::gz::gunzip(&bomb, 64 << 20, "bomb.obj.gz").unwrap_err();
     assert!(matches!(e, SceneError::OutOfMemory { .. }), "{e}");
     let msg = e.to_string();
     assert!(msg.starts_with("bomb.obj.gz: too large for memory: needs about 1.1 GB"), "{msg}");

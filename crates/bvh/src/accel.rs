@@ -1,13 +1,54 @@
 //! [`Accel`]: a back end's prepared triangles in BVH order, with closest-hit and any-hit
 //! queries and their brute-force references.
+//!
+//! ```
+//! use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
+//! use bvh::accel::Accel;
+//!
+//! /// A toy back end for rays along +z: the triangle's plane must be z = const.
+//! struct Flat;
+//!
+//! impl Intersector for Flat {
+//!     type Real = f64;
+//!     type Prim = Triangle<f64>;
+//!     type RayData = ();
+//!     const NAME: &'static str = "flat";
+//!     const ALGEBRA: Algebra = Algebra::La;
+//!     const METHOD: Method = Method::Report;
+//!     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+//!
+//!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
+//!         *tri
+//!     }
+//!     fn prepare_ray(&self, _ray: &Ray<f64>) {}
+//!     fn intersect(&self, p: &Triangle<f64>, ray: &Ray<f64>, _: &(), t_max: f64)
+//!         -> Option<TriangleHit<f64>>
+//!     {
+//!         let t = (p.a[2] - ray.origin[2]) / ray.dir[2];
+//!         // Barycentrics of the right triangle a, a + (1, 0, 0), a + (0, 1, 0).
+//!         let (u, v) = (ray.origin[0] - p.a[0], ray.origin[1] - p.a[1]);
+//!         (t > 0.0 && t <= t_max && u >= 0.0 && v >= 0.0 && u + v <= 1.0)
+//!             .then_some(TriangleHit { t, u, v })
+//!     }
+//! }
+//!
+//! let near = Triangle::new([0.0, 0.0, 2.0], [1.0, 0.0, 2.0], [0.0, 1.0, 2.0]);
+//! let far = Triangle::new([0.0, 0.0, 5.0], [1.0, 0.0, 5.0], [0.0, 1.0, 5.0]);
+//! let scene = Accel::build(Flat, &[far, near]);
+//!
+//! let ray = Ray::new([0.25, 0.25, 0.0], [0.0, 0.0, 1.0]);
+//! let hit = scene.closest_hit(&ray).unwrap();
+//! assert_eq!((hit.prim, hit.t), (1, 2.0)); // `near`, index 1 in the slice given to build
+//! assert_eq!(scene.closest_hit_brute_force(&ray), Some(hit));
+//! assert!(scene.any_hit(&ray, 10.0) && !scene.any_hit(&ray, 1.0));
+//! ```
 
 use std::time::{Duration, Instant};
 
 use intersect::{Hit, Intersector, Ray, Triangle};
 use rayon::prelude::*;
 
-use crate::bvh::Bvh;
-use crate::scene::Mesh;
+use crate::Bvh;
 
 /// Scenes with at least this many triangles prepare them in parallel.
 const PARALLEL_PREPARE: usize = 16384;
@@ -57,7 +98,7 @@ impl AccelStats {
 /// precision and the prepared triangles stored in the BVH's leaf order.
 ///
 /// Hits report triangle indices in the order of the slice given to [`Accel::build`] (for a
-/// loaded mesh, the file order documented in [`crate::scene`]).
+/// loaded mesh, the file order documented in the `scene` crate).
 pub struct Accel<I: Intersector> {
     intersector: I,
     bvh: Bvh<I::Real>,
@@ -75,7 +116,7 @@ impl<I: Intersector> Accel<I> {
     ///
     /// # Panics
     ///
-    /// If there are more than [`MAX_SLOTS`](crate::bvh::MAX_SLOTS) (2^28) triangles.
+    /// If there are more than [`MAX_SLOTS`](crate::MAX_SLOTS) (2^28) triangles.
     #[must_use]
     pub fn build(intersector: I, triangles: &[Triangle<I::Real>]) -> Self {
         let start = Instant::now();
@@ -103,16 +144,6 @@ impl<I: Intersector> Accel<I> {
             prim_bytes: prims.len() * size_of::<I::Prim>(),
         };
         Self { intersector, bvh, prims, stats }
-    }
-
-    /// [`Accel::build`] over a mesh's triangles, converted to the back end's precision.
-    ///
-    /// # Panics
-    ///
-    /// If the mesh has more than `u32::MAX` triangles.
-    #[must_use]
-    pub fn from_mesh(intersector: I, mesh: &Mesh) -> Self {
-        Self::build(intersector, &mesh.triangles::<I::Real>())
     }
 
     /// The back end.
