@@ -25,7 +25,7 @@ use raytrace::{Backend, Job, Precision, dispatch};
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::{KernelRow, fill_kernel_ratios_to_la};
 use wedge_benches::{
-    SplitMix64, bench_times, cpu_model, criterion_dir, mean_ns, output_path, write_csv,
+    SplitMix64, bench_times, criterion_dir, machine, mean_ns, output_path, write_csv,
 };
 
 /// Ray-triangle pairs per iteration: the largest per-triangle data (96 bytes) and rays fit in
@@ -179,7 +179,7 @@ fn main() {
     criterion.final_summary();
 
     let dir = criterion_dir();
-    let cpu = cpu_model();
+    let cpu = machine();
     let benchmarks = measured.len();
     let mut rows: Vec<KernelRow> = measured
         .into_iter()

@@ -77,7 +77,8 @@ impl Mesh {
 
     /// Interior vertices (not on the border of the grid), with the triangles around each.
     fn shared_vertices(&self) -> Vec<(usize, Vec<usize>)> {
-        let border = |i: usize| i % (N + 1) == 0 || i % (N + 1) == N || i <= N || i >= N * (N + 1);
+        let border =
+            |i: usize| i.is_multiple_of(N + 1) || i % (N + 1) == N || i <= N || i >= N * (N + 1);
         (0..self.vertices.len())
             .filter(|&v| !border(v))
             .map(|v| {

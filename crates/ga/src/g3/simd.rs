@@ -1,5 +1,6 @@
 //! SIMD kernels for x86-64 with AVX2 and FMA, compiled only when the build enables both (as
-//! this workspace does with `-C target-cpu=native`); other targets use the portable expansions.
+//! this workspace does with `-C target-cpu=x86-64-v3`); other targets use the portable
+//! expansions.
 //!
 //! # The geometric product of two multivectors
 //!

@@ -2,8 +2,8 @@
 //! enters first), eight child boxes tested at a time, nearest child first, a fixed stack.
 //!
 //! The box test runs in the ray's precision: `f32` rays test the `f32` planes as they are,
-//! `f64` rays convert them to `f64` (exactly) and test in `f64`. With AVX2 (the build enables
-//! it with `-C target-cpu=native` on machines that have it) eight boxes take twelve vector
+//! `f64` rays convert them to `f64` (exactly) and test in `f64`. With AVX2 (the workspace's
+//! x86-64 baseline, `-C target-cpu=x86-64-v3`, enables it) eight boxes take twelve vector
 //! subtractions and multiplications, six minima and maxima and one compare; without, the same
 //! arithmetic runs lane by lane.
 
