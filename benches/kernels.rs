@@ -20,6 +20,7 @@ use std::time::SystemTime;
 use clap::ValueEnum;
 use criterion::{Criterion, Throughput};
 use exact_tracer::Exact;
+use intersect::vec3::{cross, dot, sub};
 use intersect::{Intersector, Ray, Real, Triangle};
 use raytrace::{Backend, Job, Precision, dispatch};
 use wedge_benches::clock::configured;
@@ -215,16 +216,4 @@ fn main() {
         );
     }
     println!("wrote {}", path.display());
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }

@@ -3,7 +3,9 @@
 //! This crate holds plain data ([`Ray`], [`Triangle`], [`Hit`]) and one trait,
 //! [`Intersector`]. The renderer (`render`) is generic over it and knows no back end; the back
 //! ends (`la-tracer` with glam, `ga-tracer` with geometric algebra) implement it and know no
-//! renderer. Nothing else lives here.
+//! renderer. Beside them live only what every back end needs of the seam: the exact
+//! [`is_degenerate`] test, the `[f64; 3]` helpers of [`vec3`], and, behind the `conformance`
+//! feature, the checks every back end's tests run (`conformance`).
 //!
 //! ```
 //! use intersect::{Intersector, Ray, Triangle, TriangleHit};
@@ -70,6 +72,9 @@ use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 #[cfg(feature = "conformance")]
 pub mod conformance;
+pub mod vec3;
+
+use robust::{Coord, orient2d};
 
 /// A floating-point scalar: implemented for `f32` and `f64`.
 pub trait Real:
@@ -332,6 +337,36 @@ pub trait Intersector: Sync + Send {
     ) -> bool {
         self.intersect(prim, ray, ray_data, t_max).is_some()
     }
+}
+
+/// Whether a triangle has zero area, decided exactly: its vertices are collinear, or two of
+/// them coincide. Every back end that promises never to hit a degenerate triangle asks this
+/// once per triangle, at `prepare`.
+///
+/// The cross product `(b - a) x (c - a)` (the GA back ends' bivector `(b - a) ∧ (c - a)`) has
+/// as components the signed areas of the triangle projected onto the yz, zx and xy planes;
+/// it is zero exactly when all three are. Each is evaluated with Shewchuk's adaptive exact
+/// predicate (`robust::orient2d`); `f32` and `f64` coordinates convert to `f64` exactly, so the
+/// answer is exact however the coordinates round, unless an intermediate product underflows
+/// (coordinates differing by less than about 1e-150) or overflows. A triangle with a NaN or
+/// infinite coordinate is not reported degenerate (its orientations are not zero); the kernels
+/// miss it anyway.
+///
+/// ```
+/// use intersect::{Triangle, is_degenerate};
+///
+/// assert!(is_degenerate(&Triangle::new([0.1, 0.2, 0.3], [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])));
+/// assert!(is_degenerate(&Triangle::new([0.0f32, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0])));
+/// assert!(!is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.5])));
+/// ```
+#[must_use]
+pub fn is_degenerate<T: Real>(tri: &Triangle<T>) -> bool {
+    let [a, b, c] = tri.vertices().map(|p| p.map(Real::to_f64));
+    // (i, j) picks the plane: yz, zx, xy.
+    [(1, 2), (2, 0), (0, 1)].into_iter().all(|(i, j)| {
+        let project = |p: [f64; 3]| Coord { x: p[i], y: p[j] };
+        orient2d(project(a), project(b), project(c)) == 0.0
+    })
 }
 
 fn cast3<T: Real, U: Real>(p: [T; 3]) -> [U; 3] {
