@@ -395,6 +395,33 @@ mod tests {
         assert_eq!(t.point(0.0, 0.0), t.a);
     }
 
+    /// Lattice triangles, some exactly degenerate by chance: [`is_degenerate`] agrees with an
+    /// exact integer cross product both ways (so it cannot pass by saying "yes" to
+    /// everything), in both precisions.
+    #[test]
+    fn is_degenerate_matches_an_exact_integer_cross_product() {
+        use rand::{Rng, SeedableRng};
+        let exact_cross = |[a, b, c]: [[i64; 3]; 3]| -> [i64; 3] {
+            let (e, f): ([i64; 3], [i64; 3]) =
+                (core::array::from_fn(|n| b[n] - a[n]), core::array::from_fn(|n| c[n] - a[n]));
+            [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]]
+        };
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(0x5eed_0004);
+        let mut flat = 0;
+        for _ in 0..20_000 {
+            // Small range so that exactly collinear triples happen by chance too.
+            let v = [0; 3].map(|_| [0; 3].map(|_| rng.random_range(-2i64..=2)));
+            let expect = exact_cross(v) == [0; 3];
+            flat += u32::from(expect);
+            // Scaled by a power of two, so the coordinates stay exact.
+            let [a, b, c] = v.map(|p| p.map(|x| x as f64 * 0.125));
+            assert_eq!(is_degenerate(&Triangle::new(a, b, c)), expect, "{v:?}");
+            let t32: Triangle<f32> = Triangle::new(a, b, c).cast();
+            assert_eq!(is_degenerate(&t32), expect, "{v:?}");
+        }
+        assert!(flat > 500 && flat < 19_000, "{flat} degenerate of 20000");
+    }
+
     #[test]
     fn ray_at_and_cast() {
         let r = Ray::new([1.0f64, 2.0, 3.0], [0.0, 0.0, -1.0]);
