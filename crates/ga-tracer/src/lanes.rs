@@ -117,7 +117,8 @@ mod x86 {
                 ex: &[$t; 3],
                 ey: &[$t; 3],
             ) -> [[$t; 4]; 3] {
-                // SAFETY: as above; the stores write four numbers to each row of `out`.
+                // SAFETY: compiled only when the build enables AVX2 and FMA; the loads read
+                // and the stores write four numbers of each row (unaligned).
                 unsafe {
                     let rows = axes.each_ref().map(|row| $load(row.as_ptr()));
                     let s: [_; 3] = core::array::from_fn(|k| $sub(rows[k], $set1(origin[k])));
