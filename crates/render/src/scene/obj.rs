@@ -94,11 +94,11 @@ pub(crate) fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
     // tobj skips texture and normal indices when the file has no `vt` (or no `vn`) at all;
     // such a reference is as wrong as a bad vertex index. Only a face with a `/` can hold one.
     let lacks = |empty: fn(&tobj::Mesh) -> bool| models.iter().all(|m| empty(&m.mesh));
-    if (lacks(|m| m.texcoords.is_empty()) || lacks(|m| m.normals.is_empty())) && text.contains('/')
+    if (lacks(|m| m.texcoords.is_empty()) || lacks(|m| m.normals.is_empty()))
+        && text.contains('/')
+        && let Some(err) = check::dangling_reference(&text, name)
     {
-        if let Some(err) = check::dangling_reference(&text, name) {
-            return Err(err);
-        }
+        return Err(err);
     }
     let mesh = assemble(&models, name)?;
     match mesh {
