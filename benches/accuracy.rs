@@ -34,7 +34,7 @@ use wedge_benches::accuracy::runner::Subject;
 use wedge_benches::accuracy::suite::{SEED, Sizes, accuracy_rows, stability_rows};
 use wedge_benches::accuracy::summary::write_summary;
 use wedge_benches::clock::{ThreadClock, configured};
-use wedge_benches::{cpu_model, criterion_dir, mean_ns, quick_mode, results_dir, write_csv};
+use wedge_benches::{criterion_dir, machine, mean_ns, quick_mode, results_dir, write_csv};
 
 /// Rays per timed iteration: the first rays of the suite's random set.
 const TIMED_RAYS: usize = 2048;
@@ -82,7 +82,7 @@ fn main() {
         std::process::exit(1);
     });
     let tiles = TriMesh::tiles();
-    let cpu = cpu_model();
+    let cpu = machine();
 
     // 1. Time every subject on the same rays.
     let triangles = bunny.triangle_list();

@@ -17,7 +17,7 @@ use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::BuildRow;
 use wedge_benches::throughput::scenes::{BenchScene, bunny, subdivided};
 use wedge_benches::{
-    bench_times, cpu_model, criterion_dir, mean_ns, output_path, quick_mode, write_csv,
+    bench_times, criterion_dir, machine, mean_ns, output_path, quick_mode, write_csv,
 };
 
 /// What `Accel::build` times as the BVH build: the boxes, then the tree.
@@ -100,7 +100,7 @@ fn main() {
     criterion.final_summary();
 
     let dir = criterion_dir();
-    let cpu = cpu_model();
+    let cpu = machine();
     let benchmarks = measured.len();
     let rows: Vec<BuildRow> = measured
         .into_iter()

@@ -52,7 +52,7 @@ use ga::g3::{Multivector, Rotor, Vector};
 use glam::{DQuat, DVec3, Quat, Vec3};
 use wedge_benches::clock::{ThreadClock, configured};
 use wedge_benches::{
-    GaOpsFigures, GaOpsRow, SplitMix64, Target, cpu_model, criterion_dir, median, median_ns,
+    GaOpsFigures, GaOpsRow, SplitMix64, Target, criterion_dir, machine, median, median_ns,
     output_path, quick_mode, write_csv,
 };
 
@@ -372,7 +372,7 @@ fn main() {
     criterion.final_summary();
 
     let dir = criterion_dir();
-    let cpu = cpu_model();
+    let cpu = machine();
     let per_op = |group: &str, function: &str| {
         median_ns(&dir, group, function, started).map(|ns| ns / BATCH as f64)
     };

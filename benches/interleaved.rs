@@ -50,7 +50,7 @@ use wedge_benches::throughput::rays::{
 };
 use wedge_benches::throughput::scenes::bunny;
 use wedge_benches::throughput::trace::trace;
-use wedge_benches::{cpu_model, criterion_dir, median, quick_mode, results_dir, write_csv};
+use wedge_benches::{criterion_dir, machine, median, quick_mode, results_dir, write_csv};
 
 /// Rounds of a full run; each round runs every back end and precision once.
 const ROUNDS: usize = 9;
@@ -256,7 +256,7 @@ fn parent() -> Result<(), String> {
             }
         }
     }
-    let cpu = cpu_model();
+    let cpu = machine();
     // Each series sorted (by `median`): its minimum first and its maximum last.
     let medians: Vec<Vec<f64>> =
         figures.iter_mut().map(|sets| sets.iter_mut().map(|v| median(v)).collect()).collect();

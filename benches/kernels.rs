@@ -20,11 +20,12 @@ use std::time::SystemTime;
 use backends::{Backend, Job, Precision, dispatch};
 use criterion::{Criterion, Throughput};
 use exact_tracer::Exact;
+use intersect::vec3::{cross, dot, sub};
 use intersect::{Intersector, Ray, Real, Triangle};
 use wedge_benches::clock::configured;
 use wedge_benches::throughput::rows::{KernelRow, fill_kernel_ratios_to_la};
 use wedge_benches::{
-    SplitMix64, bench_times, cpu_model, criterion_dir, mean_ns, output_path, write_csv,
+    SplitMix64, bench_times, criterion_dir, machine, mean_ns, output_path, write_csv,
 };
 
 /// Ray-triangle pairs per iteration: the largest per-triangle data (96 bytes) and rays fit in
@@ -178,7 +179,7 @@ fn main() {
     criterion.final_summary();
 
     let dir = criterion_dir();
-    let cpu = cpu_model();
+    let cpu = machine();
     let benchmarks = measured.len();
     let mut rows: Vec<KernelRow> = measured
         .into_iter()
@@ -214,16 +215,4 @@ fn main() {
         );
     }
     println!("wrote {}", path.display());
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }

@@ -35,7 +35,7 @@ use wedge_benches::throughput::rows::{ThroughputRow, fill_ratios_to_la};
 use wedge_benches::throughput::scenes::{BenchScene, all_scenes};
 use wedge_benches::throughput::trace::{Traced, trace, trace_parallel};
 use wedge_benches::{
-    bench_times, cpu_model, criterion_dir, mean_ns, output_path, quick_mode, write_csv,
+    bench_times, criterion_dir, machine, mean_ns, output_path, quick_mode, write_csv,
 };
 
 /// Scenes with at least this many triangles also get the 1920 x 1080 alpha frame.
@@ -184,7 +184,7 @@ fn main() {
     let pool = (threads > 1).then(|| {
         rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("a thread pool")
     });
-    let cpu = cpu_model();
+    let cpu = machine();
     let scene_filter = selection("WEDGE_BENCH_SCENES");
     let backend_filter = selection("WEDGE_BENCH_BACKENDS");
     let mut measured = Vec::new();

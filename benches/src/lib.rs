@@ -168,6 +168,32 @@ pub fn cpu_model() -> String {
         .unwrap_or_else(|| "unknown".to_owned())
 }
 
+/// The x86-64 target features this build compiled in, of those that change the code the
+/// kernels, the BVH and the compiler's vectoriser choose, e.g. `"sse4.2 avx avx2 fma"` for the
+/// workspace's `x86-64-v3` baseline, more with `RUSTFLAGS="-C target-cpu=native"`, `"none"`
+/// for the plain `x86-64` baseline or another architecture.
+#[must_use]
+pub fn target_features() -> String {
+    let compiled_in = [
+        ("sse4.2", cfg!(target_feature = "sse4.2")),
+        ("avx", cfg!(target_feature = "avx")),
+        ("avx2", cfg!(target_feature = "avx2")),
+        ("fma", cfg!(target_feature = "fma")),
+        ("avx512f", cfg!(target_feature = "avx512f")),
+        ("avx512vl", cfg!(target_feature = "avx512vl")),
+    ];
+    let names: Vec<&str> = compiled_in.iter().filter(|(_, on)| *on).map(|(n, _)| *n).collect();
+    if names.is_empty() { "none".to_owned() } else { names.join(" ") }
+}
+
+/// The machine description the benches write into their results: the CPU model and, in
+/// brackets, the target features the build used ([`target_features`]), so that a figure
+/// measured with `-C target-cpu=native` is told apart from one of the stated baseline.
+#[must_use]
+pub fn machine() -> String {
+    format!("{} [{}]", cpu_model(), target_features())
+}
+
 /// What a GA operation is held to.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Target {

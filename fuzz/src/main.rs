@@ -336,15 +336,15 @@ fn worker(target: &'static Target, o: &Options) -> Result<(), String> {
         let input = mutator.mutate(&corpus[base], &corpus[other]);
         let verdict = runner.run(&input)?;
         execs += 1;
-        if let Verdict::Answer(outcome) = &verdict {
-            if kinds.insert(wedge_fuzz::signature(outcome, &input)) {
-                if corpus.len() < MAX_CORPUS {
-                    corpus.push(input);
-                } else {
-                    // Full: a new kind takes the place of an earlier find (never of a seed).
-                    let at = mutator.rng().random_range(seeds..corpus.len());
-                    corpus[at] = input;
-                }
+        if let Verdict::Answer(outcome) = &verdict
+            && kinds.insert(wedge_fuzz::signature(outcome, &input))
+        {
+            if corpus.len() < MAX_CORPUS {
+                corpus.push(input);
+            } else {
+                // Full: a new kind takes the place of an earlier find (never of a seed).
+                let at = mutator.rng().random_range(seeds..corpus.len());
+                corpus[at] = input;
             }
         }
         if last_report.elapsed() >= Duration::from_secs(5) {

@@ -207,10 +207,10 @@ impl Mutator {
     /// lines start a statement of a text format.
     fn boundary(&mut self, data: &[u8]) -> usize {
         let at = self.rng.random_range(0..=data.len());
-        if self.rng.random_bool(0.5) {
-            if let Some(nl) = data[..at].iter().rposition(|&b| b == b'\n') {
-                return nl + 1;
-            }
+        if self.rng.random_bool(0.5)
+            && let Some(nl) = data[..at].iter().rposition(|&b| b == b'\n')
+        {
+            return nl + 1;
         }
         at
     }

@@ -112,41 +112,8 @@ pub fn pow2(e: i32) -> f64 {
     }
 }
 
-/// `a - b`.
-#[must_use]
-pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-/// `a + b`.
-#[must_use]
-pub fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-/// `a * s`.
-#[must_use]
-pub fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
-    a.map(|x| x * s)
-}
-
-/// The dot product.
-#[must_use]
-pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// The cross product.
-#[must_use]
-pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
-/// Euclidean length.
-#[must_use]
-pub fn length(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
+/// The `[f64; 3]` helpers, from the seam (re-exported for the accuracy modules).
+pub use intersect::vec3::{add, cross, dot, length, scale, sub};
 
 /// `a / |a|`, or `None` for a zero or non-finite vector.
 #[must_use]

@@ -57,8 +57,8 @@
 //!
 //! The ray is prepared once: its origin, inverse direction, and for each axis the plane row
 //! it enters through. A node test computes the entry and exit distances of the eight boxes
-//! with AVX2 where the build enables it (`-C target-cpu=native` on such a machine), lane by
-//! lane otherwise. Closest-hit queries visit the children met nearest first and stack the
+//! with AVX2 where the build enables it (the workspace's x86-64 baseline does), lane by lane
+//! otherwise. Closest-hit queries visit the children met nearest first and stack the
 //! others with their entry distances, skipping those that start beyond the best hit found;
 //! any-hit queries stop at the first hit. The stack is a fixed array on the call stack: no
 //! allocation per ray.

@@ -96,27 +96,14 @@ impl Node {
 #[inline]
 pub fn f32_down(x: f64) -> f32 {
     let y = x as f32;
-    if f64::from(y) > x { step(y, -1) } else { y }
+    if f64::from(y) > x { y.next_down() } else { y }
 }
 
 /// The smallest `f32` at least `x` (NaN stays NaN).
 #[inline]
 pub fn f32_up(x: f64) -> f32 {
     let y = x as f32;
-    if f64::from(y) < x { step(y, 1) } else { y }
-}
-
-/// The neighbour of `y` towards `+inf` (`direction = 1`) or `-inf` (`-1`), for `y` not NaN and
-/// not already the infinity it steps towards (`f32::next_up`/`next_down`, which need Rust
-/// 1.86, beyond this workspace's minimum version).
-fn step(y: f32, direction: i32) -> f32 {
-    if y == 0.0 {
-        return f32::from_bits(1) * direction as f32;
-    }
-    // Positive numbers grow with their bits, negative ones shrink.
-    let away_from_zero = (y > 0.0) == (direction > 0);
-    let bits = y.to_bits();
-    f32::from_bits(if away_from_zero { bits + 1 } else { bits - 1 })
+    if f64::from(y) < x { y.next_up() } else { y }
 }
 
 #[cfg(test)]

@@ -33,11 +33,12 @@ impl F4 {
 
     #[inline(always)]
     pub fn new(a: [f32; 4]) -> Self {
-        // SAFETY (here and below): SSE and SSE2 are part of every x86-64 target.
+        // SAFETY: SSE is part of every x86-64 target, so the CPU has the instruction.
         Self(unsafe { _mm_setr_ps(a[0], a[1], a[2], a[3]) })
     }
     #[inline(always)]
     pub fn splat(x: f32) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_set1_ps(x) })
     }
     #[inline(always)]
@@ -51,27 +52,33 @@ impl F4 {
     /// second operand when either is NaN).
     #[inline(always)]
     pub fn min(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_min_ps(other.0, self.0) })
     }
     /// `max(self, other)` per lane; a NaN lane of `other` keeps `self`.
     #[inline(always)]
     pub fn max(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_max_ps(other.0, self.0) })
     }
     #[inline(always)]
     pub fn add(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_add_ps(self.0, other.0) })
     }
     #[inline(always)]
     pub fn sub(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_sub_ps(self.0, other.0) })
     }
     #[inline(always)]
     pub fn mul(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_mul_ps(self.0, other.0) })
     }
     #[inline(always)]
     pub fn div(self, other: Self) -> Self {
+        // SAFETY: SSE is part of every x86-64 target; no memory is touched.
         Self(unsafe { _mm_div_ps(self.0, other.0) })
     }
     /// Truncation towards zero, clamped to `0..=max` (NaN gives 0).

@@ -29,17 +29,10 @@ fn cross<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
-/// Whether the triangle has zero area: its edge cross product, computed in f64, is zero
-/// (exact for f32 coordinates, whose products f64 holds exactly).
-fn degenerate<T: Real>(p: &Triangle<T>) -> bool {
-    let [a, b, c] = p.vertices().map(|v| v.map(Real::to_f64));
-    cross(sub(b, a), sub(c, a)) == [0.0; 3]
-}
-
 /// Moller-Trumbore; degenerate triangles are never hit (for them the determinant is rounding
 /// noise, and so would be `t`).
 fn moller_trumbore<T: Real>(p: &Triangle<T>, ray: &Ray<T>, t_max: T) -> Option<TriangleHit<T>> {
-    if degenerate(p) {
+    if intersect::is_degenerate(p) {
         return None;
     }
     let (e1, e2) = (sub(p.b, p.a), sub(p.c, p.a));

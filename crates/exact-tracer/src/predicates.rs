@@ -83,11 +83,8 @@ impl Filtered {
     }
 }
 
-/// `p - q` in `f64`.
-#[inline(always)]
-pub(crate) fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
-}
+/// `p - q` in `f64` (one rounding per component).
+pub(crate) use intersect::vec3::sub;
 
 /// `det[p, q, r]` in `f64` with its error bound, where `rel` is the relative coefficient for
 /// the number of rounded columns (see the module docs). `p` and `q` (and `r`, for

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{Q, Q3, cross, dot, is_nearest, next_down, next_up, q, q3, sign, sub};
+use common::{Q, Q3, cross, dot, is_nearest, q, q3, sign, sub};
 use exact_tracer::{Exact, Sign};
 use intersect::{Intersector, Ray, Triangle, TriangleHit};
 use num_traits::{Signed, Zero};
@@ -126,7 +126,7 @@ fn decisions_and_values_match_exact_rationals() {
             let mut dir: [f64; 3] = core::array::from_fn(|k| target[k] - origin[k]);
             if rng.random_bool(0.5) {
                 let i = rng.random_range(0..3);
-                dir[i] = next_up(dir[i]);
+                dir[i] = f64::next_up(dir[i]);
             }
             let ray = Ray::new(origin, dir);
             let Some((t, u, v)) = exact_tuv(&tri, &ray) else {
@@ -150,7 +150,7 @@ fn decisions_and_values_match_exact_rationals() {
             assert!(is_nearest(hit.u, &u), "u {} vs {u}", hit.u);
             assert!(is_nearest(hit.v, &v), "v {} vs {v}", hit.v);
             // t_max is compared exactly: the nearest doubles around the exact t.
-            for t_max in [hit.t, next_up(hit.t), next_down(hit.t)] {
+            for t_max in [hit.t, f64::next_up(hit.t), f64::next_down(hit.t)] {
                 let expected = t <= q(t_max);
                 assert_eq!(intersect(&tri, &ray, t_max).is_some(), expected, "t_max {t_max}");
             }

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{det, next_down, next_up, perturbed_edge_sign, q3, sign, sub};
+use common::{det, perturbed_edge_sign, q3, sign, sub};
 use exact_tracer::Sign;
 use exact_tracer::predicates::{edge_sign, edge_sign_perturbed, is_degenerate, orient3d};
 use intersect::Triangle;
@@ -94,7 +94,7 @@ fn points_on_edges_and_one_ulp_nudges_match_exact_rationals() {
                     let mut inputs = [o, d, p, r];
                     let which = rng.random_range(0..12);
                     let x = &mut inputs[which / 3][which % 3];
-                    *x = if rng.random_bool(0.5) { next_up(*x) } else { next_down(*x) };
+                    *x = if rng.random_bool(0.5) { f64::next_up(*x) } else { f64::next_down(*x) };
                     let [o, d, p, r] = inputs;
                     check(o, d, p, r);
                 }
@@ -169,7 +169,7 @@ fn orient3d_matches_the_robust_crate() {
             core::array::from_fn(|i| o[i] + s * (a[i] - o[i]) + t * (b[i] - o[i]));
         if rng.random_bool(0.5) {
             let i = rng.random_range(0..3);
-            cc[i] = next_up(cc[i]);
+            cc[i] = f64::next_up(cc[i]);
         }
         // Shewchuk's orient3d(a, b, c, o) is det[a - o, b - o, c - o].
         let theirs = robust::orient3d(c(a), c(b), c(cc), c(o));
@@ -198,7 +198,7 @@ fn degeneracy_matches_exact_rationals() {
             let c: [f64; 3] = core::array::from_fn(|i| a[i] + t * e[i]);
             if rng.random_bool(0.5) {
                 let i = rng.random_range(0..3);
-                b[i] = if rng.random_bool(0.5) { next_up(b[i]) } else { next_down(b[i]) };
+                b[i] = if rng.random_bool(0.5) { b[i].next_up() } else { b[i].next_down() };
             }
             let tri = Triangle::new(a, b, c);
             let (a, b, c) = (q3(a), q3(b), q3(c));

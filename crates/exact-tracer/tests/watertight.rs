@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{next_down, q};
+use common::q;
 use exact_tracer::{Exact, Sign};
 use intersect::{Intersector, Ray, Triangle, TriangleHit};
 use rand::{Rng, SeedableRng};
@@ -118,7 +118,7 @@ fn rays_exactly_through_shared_edges_and_vertices_hit_exactly_one_triangle() {
             assert_eq!(mesh[i].point(hit.u, hit.v), target, "{hit:?}");
             // t_max is tested exactly too: t = 1 is inside (0, 1], outside (0, 1 - ulp].
             assert_eq!(all_hits(&mesh, &ray, 1.0).len(), 1);
-            assert_eq!(all_hits(&mesh, &ray, next_down(1.0)).len(), 0);
+            assert_eq!(all_hits(&mesh, &ray, f64::next_down(1.0)).len(), 0);
         }
     }
 }

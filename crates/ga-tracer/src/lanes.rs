@@ -4,7 +4,7 @@
 //! [`crate::precomputed`] and [`crate::plucker`]), so that what they compute for three vectors
 //! (inner products with `n`, `m_b`, `m_c`; projections of `a`, `b`, `c`) is one expression over
 //! the rows, one vector per lane. On x86-64 with AVX2 and FMA (this workspace builds with
-//! `-C target-cpu=native`) a row is one SSE register in `f32` and one AVX register in `f64`;
+//! `-C target-cpu=x86-64-v3`) a row is one SSE register in `f32` and one AVX register in `f64`;
 //! elsewhere the same expressions run lane by lane.
 //!
 //! **Same bits either way.** [`frame_products`] and [`plucker_edges`] are the lane-by-lane
@@ -117,7 +117,8 @@ mod x86 {
                 ex: &[$t; 3],
                 ey: &[$t; 3],
             ) -> [[$t; 4]; 3] {
-                // SAFETY: as above; the stores write four numbers to each row of `out`.
+                // SAFETY: compiled only when the build enables AVX2 and FMA; the loads read
+                // and the stores write four numbers of each row (unaligned).
                 unsafe {
                     let rows = axes.each_ref().map(|row| $load(row.as_ptr()));
                     let s: [_; 3] = core::array::from_fn(|k| $sub(rows[k], $set1(origin[k])));
@@ -204,6 +205,38 @@ mod tests {
         p.into_iter().flat_map(|row| row.into_iter().take(3))
     }
 
+    /// The documented values written out once more with std's own arithmetic, lane by lane
+    /// and independently of the code under test (which, built without AVX2 and FMA, *is* the
+    /// lane-by-lane definition): `[num, den, U, V]` of [`frame_products`] and `[x, y, w]` of
+    /// [`plucker_edges`], multiply-adds fused exactly when the build has FMA.
+    macro_rules! by_hand {
+        ($t:ty) => {{
+            let mad = |a: $t, b: $t, c: $t| {
+                if cfg!(target_feature = "fma") { a.mul_add(b, c) } else { a * b + c }
+            };
+            let dot = move |v: [$t; 3], w: [$t; 3]| mad(v[2], w[2], mad(v[1], w[1], v[0] * w[0]));
+            let frame = move |axes: &[[$t; 4]; 3], origin: &[$t; 3], dir: &[$t; 3]| {
+                let column = |j: usize| [axes[0][j], axes[1][j], axes[2][j]];
+                let s =
+                    [column(3)[0] - origin[0], column(3)[1] - origin[1], column(3)[2] - origin[2]];
+                let (num, den) = (dot(s, column(0)), dot(*dir, column(0)));
+                let edge = |j: usize| mad(num, dot(*dir, column(j)), -(den * dot(s, column(j))));
+                [num, den, edge(1), edge(2)]
+            };
+            let plucker = move |axes: &[[$t; 4]; 3], o: &[$t; 3], ex: &[$t; 3], ey: &[$t; 3]| {
+                let vertex = |j: usize| [axes[0][j] - o[0], axes[1][j] - o[1], axes[2][j] - o[2]];
+                let x: [$t; 3] = core::array::from_fn(|j| dot(vertex(j), *ex));
+                let y: [$t; 3] = core::array::from_fn(|j| dot(vertex(j), *ey));
+                let w: [$t; 3] = core::array::from_fn(|j| {
+                    let (p, q) = ((j + 1) % 3, (j + 2) % 3);
+                    x[p] * y[q] - y[p] * x[q]
+                });
+                [x, y, w]
+            };
+            (frame, plucker)
+        }};
+    }
+
     macro_rules! check {
         ($t:ty, $frame:ident, $plucker:ident, $seed:expr) => {
             let mut rng = Pcg64::seed_from_u64($seed);
@@ -217,23 +250,29 @@ mod tests {
                     }
                 }
             };
+            let (frame, plucker) = by_hand!($t);
             for _ in 0..100_000 {
                 let axes: [[$t; 4]; 3] =
                     core::array::from_fn(|_| core::array::from_fn(|_| value(&mut rng)));
                 let [origin, dir, ex]: [[$t; 3]; 3] =
                     core::array::from_fn(|_| core::array::from_fn(|_| value(&mut rng)));
-                let (got, want) =
-                    ($frame(&axes, &origin, &dir), frame_products(&axes, &origin, &dir));
+                let want = frame(&axes, &origin, &dir);
+                let got = $frame(&axes, &origin, &dir);
                 assert!(same(got, want), "{axes:?} {origin:?} {dir:?}: {got:?} {want:?}");
-                let (got, want) =
-                    ($plucker(&axes, &origin, &ex, &dir), plucker_edges(&axes, &origin, &ex, &dir));
-                assert!(same(lanes(got), lanes(want)), "{axes:?} {origin:?} {ex:?} {dir:?}");
+                let generic = frame_products(&axes, &origin, &dir);
+                assert!(same(generic, want), "{axes:?} {origin:?} {dir:?}: {generic:?} {want:?}");
+                let want = plucker(&axes, &origin, &ex, &dir).into_iter().flatten();
+                let got = $plucker(&axes, &origin, &ex, &dir);
+                assert!(same(lanes(got), want.clone()), "{axes:?} {origin:?} {ex:?} {dir:?}");
+                let generic = plucker_edges(&axes, &origin, &ex, &dir);
+                assert!(same(lanes(generic), want), "{axes:?} {origin:?} {ex:?} {dir:?}");
             }
         };
     }
 
-    /// The four-lane forms (where the build has AVX2 and FMA) give the same bits as the
-    /// lane-by-lane definitions, NaN and infinities included.
+    /// The four-lane forms (with AVX2 and FMA; without, the lane-by-lane definitions they
+    /// then are) and the lane-by-lane definitions give the same bits as the values written
+    /// out by hand, NaN and infinities included.
     #[test]
     fn four_lane_forms_match_lane_by_lane() {
         check!(f32, frame_products_f32, plucker_edges_f32, 0x6a_4002);

@@ -88,34 +88,6 @@ pub use precomputed::{Ga, GaPrim};
 pub use real::GaReal;
 pub use report::{GaReport, ReportPrim};
 
-use intersect::{Real, Triangle};
-use robust::{Coord, orient2d};
-
-/// Whether a triangle has zero area, decided exactly: its bivector `(b - a) ∧ (c - a)` is
-/// exactly zero.
-///
-/// The bivector's components `e12`, `e23`, `e31` are the signed areas of the triangle's
-/// projections onto the three coordinate planes; each is evaluated with Shewchuk's adaptive
-/// exact predicate (`robust::orient2d`), on coordinates converted to `f64` exactly. So a
-/// triangle with collinear or repeated vertices is degenerate however its coordinates round,
-/// and every other triangle is not (barring underflow of products of coordinate differences
-/// below about `1e-150`). A triangle with a NaN or infinite coordinate is not reported
-/// degenerate; the kernels miss it anyway.
-///
-/// ```
-/// use intersect::{Real, Triangle};
-/// use ga_tracer::is_degenerate;
-///
-/// assert!(is_degenerate(&Triangle::new([0.1, 0.2, 0.3], [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])));
-/// assert!(is_degenerate(&Triangle::new([0.0f32, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0])));
-/// assert!(!is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.5])));
-/// ```
-#[must_use]
-pub fn is_degenerate<T: Real>(tri: &Triangle<T>) -> bool {
-    let [a, b, c] = tri.vertices().map(|p| p.map(Real::to_f64));
-    // (i, j) picks the coordinate plane of e12, e23, e31.
-    [(0, 1), (1, 2), (2, 0)].into_iter().all(|(i, j)| {
-        let project = |p: [f64; 3]| Coord { x: p[i], y: p[j] };
-        orient2d(project(a), project(b), project(c)) == 0.0
-    })
-}
+/// Re-exported from the seam, where every back end finds it: whether a triangle has zero
+/// area (its bivector `(b - a) ∧ (c - a)` is exactly zero), decided exactly.
+pub use intersect::is_degenerate;

@@ -2,9 +2,10 @@
 //! rays with fixed seeds: the hit/miss decision agrees except within a thin band around the
 //! edges, `t` and the barycentrics are accurate, and the kernels agree with each other.
 
-mod common;
-
-use common::{is_f32, label, ray_towards, reference, rng, run, tolerance, triangle};
+use intersect::conformance::contract::run;
+use intersect::conformance::label;
+use intersect::conformance::reference::{is_f32, ray_towards, reference, rng, tolerance, triangle};
+use intersect::conformance::sweeps::deviation;
 use intersect::{Intersector, Ray, Real, Triangle};
 
 /// Half-width of the band around the edges, in barycentric units, where a kernel may decide
@@ -32,49 +33,10 @@ fn uv_tolerance<I: Intersector>() -> f64 {
     }
 }
 
-/// Largest observed deviation, for the report printed with `--nocapture`.
-#[derive(Default)]
-struct Worst {
-    band: f64,
-    t: f64,
-    uv: f64,
-    disagreements: usize,
-    hits: usize,
-}
-
 fn agrees_with_reference<I: Intersector + Default>() {
     let name = label::<I>();
-    let k = I::default();
-    let mut rng = rng(0x6a_1001);
     let tol = tolerance::<I::Real>();
-    let mut worst = Worst::default();
-    for _ in 0..40_000 {
-        let tri: Triangle<I::Real> = triangle(&mut rng).cast();
-        let ray: Ray<I::Real> = ray_towards(&mut rng, &tri.cast()).cast();
-        let got = run(&k, &tri, &ray, I::Real::INFINITY);
-        let Some(r) = reference(&tri, &ray) else {
-            assert!(got.is_none(), "{name}: hit where the reference has none");
-            continue;
-        };
-        if r.cos < 0.01 {
-            continue;
-        }
-        // Errors grow as the ray grazes the plane: tolerances scale with 1 / cos below 0.1.
-        let conditioning = (0.1 / r.cos).max(1.0);
-        if got.is_some() != r.is_hit(f64::INFINITY) {
-            // Only rays within the band around an edge, or starting on the plane.
-            let near = r.margin().abs().min(r.t.abs() / r.t.abs().max(1.0)) / conditioning;
-            worst.band = worst.band.max(near);
-            worst.disagreements += 1;
-        }
-        if let Some(h) = got {
-            worst.hits += 1;
-            let t_err = (h.t.to_f64() - r.t).abs() / r.t.abs() / conditioning;
-            let uv_err = (h.u.to_f64() - r.u).abs().max((h.v.to_f64() - r.v).abs()) / conditioning;
-            worst.t = worst.t.max(t_err);
-            worst.uv = worst.uv.max(uv_err);
-        }
-    }
+    let worst = deviation::<I>(40_000);
     eprintln!(
         "{name}: {} hits; {} disagreements, all within {:.1e} of an edge; max relative t error \
          {:.1e}, max (u, v) error {:.1e}",
@@ -144,6 +106,18 @@ fn accurate_far_from_the_origin<I: Intersector + Default>() {
     }
     eprintln!("{name}: max relative t error {worst:.1e} at 1e3 extents from the origin");
     assert!(hits > 1_000, "{name}: only {hits} hits");
+}
+
+/// Runs `$check::<K>()` for every kernel of the crate in both precisions.
+macro_rules! for_each_kernel {
+    ($check:ident) => {
+        $check::<ga_tracer::GaReport<f32>>();
+        $check::<ga_tracer::GaReport<f64>>();
+        $check::<ga_tracer::Ga<f32>>();
+        $check::<ga_tracer::Ga<f64>>();
+        $check::<ga_tracer::GaPlucker<f32>>();
+        $check::<ga_tracer::GaPlucker<f64>>();
+    };
 }
 
 #[test]

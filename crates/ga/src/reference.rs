@@ -368,14 +368,14 @@ impl Multivector {
     pub fn reverse(&self) -> Self {
         self.map(|blade, c| {
             let k = grade_of(blade);
-            if (k * k.saturating_sub(1) / 2) % 2 == 0 { c } else { -c }
+            if (k * k.saturating_sub(1) / 2).is_multiple_of(2) { c } else { -c }
         })
     }
 
     /// The grade involution: each grade-`k` blade times `(-1)^k`.
     #[must_use]
     pub fn grade_involution(&self) -> Self {
-        self.map(|blade, c| if grade_of(blade) % 2 == 0 { c } else { -c })
+        self.map(|blade, c| if grade_of(blade).is_multiple_of(2) { c } else { -c })
     }
 
     /// The Clifford conjugate: reverse composed with grade involution, `(-1)^(k(k+1)/2)`.

@@ -95,10 +95,11 @@ pub trait Scalar:
     fn max(self, other: Self) -> Self;
     /// `self * a + b`.
     ///
-    /// Fused (one rounding) when the build targets a CPU with FMA, as this workspace does with
-    /// `-C target-cpu=native`; otherwise a separate multiply and add. A fused multiply-add
-    /// without hardware support is a slow library call, and the kernels use this in their
-    /// inner loops, so the choice is made at compile time rather than paying that price.
+    /// Fused (one rounding) when the build targets a CPU with FMA, as this workspace does on
+    /// x86-64 (`-C target-cpu=x86-64-v3`); otherwise a separate multiply and add. A fused
+    /// multiply-add without hardware support is a slow library call, and the kernels use this
+    /// in their inner loops, so the choice is made at compile time rather than paying that
+    /// price.
     #[must_use]
     fn mul_add(self, a: Self, b: Self) -> Self;
     /// Whether the value is neither infinite nor NaN.

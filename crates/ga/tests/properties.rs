@@ -14,9 +14,14 @@ use proptest::test_runner::{Config, RngSeed};
 
 const TOLERANCE: f64 = 1e-12;
 
+/// Cases per property: 256, or `PROPTEST_CASES` when it is set (to search harder locally).
+fn cases(env: Option<&str>) -> u32 {
+    env.map_or(256, |s| s.trim().parse().unwrap_or_else(|_| panic!("PROPTEST_CASES={s:?}")))
+}
+
 fn config(seed: u64) -> Config {
     Config {
-        cases: 256,
+        cases: cases(std::env::var("PROPTEST_CASES").ok().as_deref()),
         rng_seed: RngSeed::Fixed(seed),
         // No regression files: the seed already makes every failure reproducible.
         failure_persistence: None,
@@ -255,4 +260,16 @@ proptest! {
         let (inside, normal) = (v.project(plane), v.reject(plane));
         prop_assert!(close(half.rotate(v), normal - inside, v.norm()));
     }
+}
+
+/// The case count is 256 by default and follows `PROPTEST_CASES` when it is set, as the
+/// module docs promise.
+#[test]
+fn case_count_follows_proptest_cases() {
+    assert_eq!(cases(None), 256);
+    assert_eq!(cases(Some("5000")), 5000);
+    assert_eq!(cases(Some(" 12\n")), 12);
+    assert!(std::panic::catch_unwind(|| cases(Some("many"))).is_err());
+    let env = std::env::var("PROPTEST_CASES").ok();
+    assert_eq!(config(1).cases, cases(env.as_deref()));
 }

@@ -4,7 +4,9 @@
 //! [`Guarantees`] by which a kernel describes itself) and one trait,
 //! [`Intersector`]. The renderer (`render`) is generic over it and knows no back end; the back
 //! ends (`la-tracer` with glam, `ga-tracer` with geometric algebra) implement it and know no
-//! renderer. Nothing else lives here.
+//! renderer. Beside them live only what every back end needs of the seam: the exact
+//! [`is_degenerate`] test, the `[f64; 3]` helpers of [`vec3`], and, behind the `conformance`
+//! feature, the checks every back end's tests run (`conformance`).
 //!
 //! ```
 //! use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, TriangleHit};
@@ -79,6 +81,9 @@ use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
 #[cfg(feature = "conformance")]
 pub mod conformance;
+pub mod vec3;
+
+use robust::{Coord, orient2d};
 
 /// The algebra a kernel is written in ([`Intersector::ALGEBRA`]).
 ///
@@ -426,6 +431,36 @@ pub trait Intersector: Sync + Send {
     }
 }
 
+/// Whether a triangle has zero area, decided exactly: its vertices are collinear, or two of
+/// them coincide. Every back end that promises never to hit a degenerate triangle asks this
+/// once per triangle, at `prepare`.
+///
+/// The cross product `(b - a) x (c - a)` (the GA back ends' bivector `(b - a) ∧ (c - a)`) has
+/// as components the signed areas of the triangle projected onto the yz, zx and xy planes;
+/// it is zero exactly when all three are. Each is evaluated with Shewchuk's adaptive exact
+/// predicate (`robust::orient2d`); `f32` and `f64` coordinates convert to `f64` exactly, so the
+/// answer is exact however the coordinates round, unless an intermediate product underflows
+/// (coordinates differing by less than about 1e-150) or overflows. A triangle with a NaN or
+/// infinite coordinate is not reported degenerate (its orientations are not zero); the kernels
+/// miss it anyway.
+///
+/// ```
+/// use intersect::{Triangle, is_degenerate};
+///
+/// assert!(is_degenerate(&Triangle::new([0.1, 0.2, 0.3], [0.1, 0.2, 0.3], [1.0, 2.0, 3.0])));
+/// assert!(is_degenerate(&Triangle::new([0.0f32, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0])));
+/// assert!(!is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.5])));
+/// ```
+#[must_use]
+pub fn is_degenerate<T: Real>(tri: &Triangle<T>) -> bool {
+    let [a, b, c] = tri.vertices().map(|p| p.map(Real::to_f64));
+    // (i, j) picks the plane: yz, zx, xy.
+    [(1, 2), (2, 0), (0, 1)].into_iter().all(|(i, j)| {
+        let project = |p: [f64; 3]| Coord { x: p[i], y: p[j] };
+        orient2d(project(a), project(b), project(c)) == 0.0
+    })
+}
+
 fn cast3<T: Real, U: Real>(p: [T; 3]) -> [U; 3] {
     p.map(|x| U::from_f64(x.to_f64()))
 }
@@ -450,6 +485,33 @@ mod tests {
         let t = Triangle::new([0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 4.0, 0.0]);
         assert_eq!(t.point(0.5, 0.25), [1.0, 1.0, 0.0]);
         assert_eq!(t.point(0.0, 0.0), t.a);
+    }
+
+    /// Lattice triangles, some exactly degenerate by chance: [`is_degenerate`] agrees with an
+    /// exact integer cross product both ways (so it cannot pass by saying "yes" to
+    /// everything), in both precisions.
+    #[test]
+    fn is_degenerate_matches_an_exact_integer_cross_product() {
+        use rand::{Rng, SeedableRng};
+        let exact_cross = |[a, b, c]: [[i64; 3]; 3]| -> [i64; 3] {
+            let (e, f): ([i64; 3], [i64; 3]) =
+                (core::array::from_fn(|n| b[n] - a[n]), core::array::from_fn(|n| c[n] - a[n]));
+            [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]]
+        };
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(0x5eed_0004);
+        let mut flat = 0;
+        for _ in 0..20_000 {
+            // Small range so that exactly collinear triples happen by chance too.
+            let v = [0; 3].map(|_| [0; 3].map(|_| rng.random_range(-2i64..=2)));
+            let expect = exact_cross(v) == [0; 3];
+            flat += u32::from(expect);
+            // Scaled by a power of two, so the coordinates stay exact.
+            let [a, b, c] = v.map(|p| p.map(|x| x as f64 * 0.125));
+            assert_eq!(is_degenerate(&Triangle::new(a, b, c)), expect, "{v:?}");
+            let t32: Triangle<f32> = Triangle::new(a, b, c).cast();
+            assert_eq!(is_degenerate(&t32), expect, "{v:?}");
+        }
+        assert!(flat > 500 && flat < 19_000, "{flat} degenerate of 20000");
     }
 
     #[test]

@@ -73,9 +73,6 @@ pub mod watertight;
 pub use moller_trumbore::{MollerTrumbore, MtPrim};
 pub use watertight::{Watertight, WatertightPrim, WatertightRay};
 
-use intersect::{Real, Triangle};
-use robust::{Coord, orient2d};
-
 /// A precision the glam back end supports: `f32` (computed with [`glam::Vec3A`]) and `f64`
 /// (with [`glam::DVec3`]).
 ///
@@ -85,30 +82,6 @@ pub trait GlamReal: lanes::Lanes {}
 impl GlamReal for f32 {}
 impl GlamReal for f64 {}
 
-/// Whether a triangle has zero area, decided exactly: its vertices are collinear, or two of
-/// them coincide.
-///
-/// The cross product `(b - a) x (c - a)` has as components the orientations of the triangle
-/// projected onto the yz, zx and xy planes; it is zero exactly when all three are. Each
-/// orientation is evaluated with Shewchuk's adaptive exact predicate (`robust::orient2d`);
-/// `f32` and `f64` coordinates convert to `f64` exactly, so the answer is exact unless an
-/// intermediate product underflows (coordinates differing by less than about 1e-150) or
-/// overflows. A triangle with a NaN or infinite coordinate is not reported degenerate (its
-/// orientations are not zero); the kernels miss it anyway.
-///
-/// ```
-/// use intersect::Triangle;
-/// use la_tracer::is_degenerate;
-///
-/// assert!(is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.0])));
-/// assert!(!is_degenerate(&Triangle::new([0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [3.0, 3.0, 3.5])));
-/// ```
-#[must_use]
-pub fn is_degenerate<T: Real>(tri: &Triangle<T>) -> bool {
-    let [a, b, c] = tri.vertices().map(|p| p.map(Real::to_f64));
-    // (i, j) picks the plane: yz, zx, xy.
-    [(1, 2), (2, 0), (0, 1)].into_iter().all(|(i, j)| {
-        let project = |p: [f64; 3]| Coord { x: p[i], y: p[j] };
-        orient2d(project(a), project(b), project(c)) == 0.0
-    })
-}
+/// Re-exported from the seam, where every back end finds it: whether a triangle has zero
+/// area, decided exactly.
+pub use intersect::is_degenerate;

@@ -346,16 +346,17 @@ fn run(row: &Row, dir: &Path) -> Run {
         if let Some(status) = child.try_wait().unwrap() {
             break status;
         }
-        if let How::Signal(sig) = row.how {
-            if !signalled && has_temporary(dir) {
-                // The outputs exist as temporaries: the run is past its checks, working.
-                std::thread::sleep(Duration::from_millis(200));
-                let pid = libc::pid_t::try_from(child.id()).unwrap();
-                // SAFETY: kill has no memory-safety preconditions; `pid` is our child, which
-                // has not been waited for, so the id is not reused.
-                assert_eq!(unsafe { libc::kill(pid, sig) }, 0);
-                signalled = true;
-            }
+        if let How::Signal(sig) = row.how
+            && !signalled
+            && has_temporary(dir)
+        {
+            // The outputs exist as temporaries: the run is past its checks, working.
+            std::thread::sleep(Duration::from_millis(200));
+            let pid = libc::pid_t::try_from(child.id()).unwrap();
+            // SAFETY: kill has no memory-safety preconditions; `pid` is our child, which
+            // has not been waited for, so the id is not reused.
+            assert_eq!(unsafe { libc::kill(pid, sig) }, 0);
+            signalled = true;
         }
         if start.elapsed() > TIME_LIMIT {
             let _ = child.kill();

@@ -34,6 +34,7 @@
 //! image. Concretely: a mesh vertex at `(1, 0, 5)` appears right of the centre
 //! of the origin camera's image, and one at `(0, 1, 5)` above it.
 
+use intersect::vec3::{cross, length, sub};
 use intersect::{Ray, Real};
 
 /// The default vertical field of view, in degrees.
@@ -215,17 +216,9 @@ impl Camera {
     }
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
 /// `v / |v|`, or `None` when `v` is too short to have a direction.
 fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
-    let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let len = length(v);
     // Relative to the largest component: a tiny but well-formed vector still normalises.
     let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     (len > 0.0 && len.is_finite() && len > scale * 1e-12).then(|| v.map(|x| x / len))
@@ -235,9 +228,7 @@ fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
 mod tests {
     use super::*;
 
-    fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-    }
+    use intersect::vec3::dot;
 
     fn close(a: [f64; 3], b: [f64; 3], tol: f64) -> bool {
         (0..3).all(|k| (a[k] - b[k]).abs() <= tol)

@@ -29,6 +29,7 @@
 //! `progress` is called with the number of pixels just finished (from any thread), so a
 //! caller can drive a progress bar; the calls add up to `width * height`.
 
+use intersect::vec3::{cross, dot, sub};
 use intersect::{Intersector, Real};
 use rayon::prelude::*;
 
@@ -155,18 +156,6 @@ fn shading_normal(mesh: &Mesh, index: usize, u: f64, v: f64, dir: [f64; 3]) -> [
         Some(n) => n,
         None => facing,
     }
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 
 fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {

@@ -125,10 +125,10 @@ fn check_numbers(
     }
     for word in &words[..n] {
         let x = number(word)?;
-        if let Some(what) = finite {
-            if !x.is_finite() {
-                return Err(Problem::NotFinite { what, value: (*word).to_owned() });
-            }
+        if let Some(what) = finite
+            && !x.is_finite()
+        {
+            return Err(Problem::NotFinite { what, value: (*word).to_owned() });
         }
     }
     Ok(())

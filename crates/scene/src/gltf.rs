@@ -136,14 +136,14 @@ fn document(json: &[u8]) -> Result<gltf::Document, String> {
     let position = gltf::json::validation::Checked::Valid(gltf::json::mesh::Semantic::Positions);
     for (m, mesh) in root.meshes.iter().enumerate() {
         for (p, primitive) in mesh.primitives.iter().enumerate() {
-            if let Some(i) = primitive.attributes.get(&position) {
-                if i.value() >= root.accessors.len() {
-                    return Err(format!(
-                        "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} \
+            if let Some(i) = primitive.attributes.get(&position)
+                && i.value() >= root.accessors.len()
+            {
+                return Err(format!(
+                    "meshes[{m}].primitives[{p}].attributes[\"POSITION\"]: accessor {} \
                          does not exist",
-                        i.value()
-                    ));
-                }
+                    i.value()
+                ));
             }
         }
     }
@@ -239,11 +239,11 @@ fn load_buffers<'a>(
     // External files first checked for size, all together, before any is read.
     let mut external = 0u64;
     for buffer in doc.buffers() {
-        if let (gltf::buffer::Source::Uri(uri), Some(path)) = (buffer.source(), path) {
-            if !uri.starts_with("data:") {
-                let file = external_path(path, uri).map_err(|p| bad(buffer.index(), p))?;
-                external += crate::input::regular_file_size(&file)?;
-            }
+        if let (gltf::buffer::Source::Uri(uri), Some(path)) = (buffer.source(), path)
+            && !uri.starts_with("data:")
+        {
+            let file = external_path(path, uri).map_err(|p| bad(buffer.index(), p))?;
+            external += crate::input::regular_file_size(&file)?;
         }
     }
     if external > 0 {
@@ -346,7 +346,7 @@ impl Output {
         let vertex_count = positions.count();
         let index_count = primitive.indices().map_or(vertex_count, |a: gltf::Accessor| a.count());
         let triangle_count = match mode {
-            Mode::Triangles if index_count % 3 != 0 => {
+            Mode::Triangles if !index_count.is_multiple_of(3) => {
                 return Err(format!("TRIANGLES with {index_count} indices (not a multiple of 3)"));
             }
             Mode::Triangles => index_count / 3,

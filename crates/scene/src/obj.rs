@@ -94,11 +94,11 @@ pub(crate) fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
     // tobj skips texture and normal indices when the file has no `vt` (or no `vn`) at all;
     // such a reference is as wrong as a bad vertex index. Only a face with a `/` can hold one.
     let lacks = |empty: fn(&tobj::Mesh) -> bool| models.iter().all(|m| empty(&m.mesh));
-    if (lacks(|m| m.texcoords.is_empty()) || lacks(|m| m.normals.is_empty())) && text.contains('/')
+    if (lacks(|m| m.texcoords.is_empty()) || lacks(|m| m.normals.is_empty()))
+        && text.contains('/')
+        && let Some(err) = check::dangling_reference(&text, name)
     {
-        if let Some(err) = check::dangling_reference(&text, name) {
-            return Err(err);
-        }
+        return Err(err);
     }
     let mesh = assemble(&models, name)?;
     match mesh {
@@ -111,20 +111,39 @@ pub(crate) fn from_obj_str(text: &str, name: &str) -> Result<Mesh, SceneError> {
     }
 }
 
-/// Whether a face holds an index (of a vertex, texture coordinate or normal) whose magnitude
-/// exceeds the length of the text, and so every count of the file.
+/// Whether a face holds an index that overflows tobj's arithmetic: a relative (negative)
+/// index reaching before the first vertex, texture coordinate or normal read so far, or an
+/// absolute one whose magnitude exceeds the length of the text (and so every count of the
+/// file). One pass; tobj refuses the other out-of-range indices itself.
 fn has_impossible_index(text: &str) -> bool {
     let limit = text.len() as u64;
-    let mut face_lines = text.lines().filter(|l| l.trim_start().starts_with('f'));
-    face_lines.any(|line| {
+    // Vertices, texture coordinates and normals read so far.
+    let mut so_far = [0u64; 3];
+    text.lines().any(|line| {
         let mut words = line.split_whitespace();
-        words.next() == Some("f")
-            && words.flat_map(|w| w.split('/')).any(|index| {
-                let digits = index.strip_prefix('-').unwrap_or(index);
-                // Too many digits for u64 is impossible too; a non-number is for tobj to refuse.
+        let kind = match words.next() {
+            Some("v") => 0,
+            Some("vt") => 1,
+            Some("vn") => 2,
+            Some("f") => 3,
+            _ => return false,
+        };
+        if kind < 3 {
+            so_far[kind] += 1;
+            return false;
+        }
+        words.any(|word| {
+            word.split('/').enumerate().any(|(k, index)| {
+                let (negative, digits) = match index.strip_prefix('-') {
+                    Some(d) => (true, d),
+                    None => (false, index),
+                };
+                // Too many digits for u64 is impossible too; a non-number is for tobj.
+                let bound = if negative { so_far[k.min(2)] } else { limit };
                 digits.bytes().all(|b| b.is_ascii_digit())
-                    && digits.parse::<u64>().map_or(!digits.is_empty(), |n| n > limit)
+                    && digits.parse::<u64>().map_or(!digits.is_empty(), |n| n > bound)
             })
+        })
     })
 }
 

@@ -323,6 +323,12 @@ fn texture_and_normal_references_must_exist() {
         "relative texture coordinate index -9223372036854775808 is out of range \
          (1 texture coordinates before this line)"
     );
+    // A small relative index reaching before the first texture coordinate overflowed too.
+    assert_eq!(
+        error_at(&format!("{SQUARE}vt 0 0\nf 1/1 2/1 3/-9\n"), 6),
+        "relative texture coordinate index -9 is out of range (1 texture coordinates before \
+         this line)"
+    );
     // Existing references are fine, with or without the other kind.
     let ok = format!("{SQUARE}vt 0 0\nvn 0 0 1\nf 1/1 2/1 3/1\nf 1//1 3//1 4//1\n");
     assert_eq!(Mesh::from_obj_str(&ok, "ok.obj").unwrap().len(), 2);

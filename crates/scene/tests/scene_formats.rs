@@ -408,7 +408,7 @@ struct Gltf {
 impl Gltf {
     /// Adds `data` as a buffer view and an accessor; returns the accessor's index.
     fn accessor(&mut self, data: &[u8], count: usize, ty: &str, component: u32) -> usize {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
         let offset = self.bin.len();
@@ -465,11 +465,11 @@ impl Gltf {
 
     fn glb(&self, scenes: &str) -> Vec<u8> {
         let mut json = self.json(None, scenes).into_bytes();
-        while json.len() % 4 != 0 {
+        while !json.len().is_multiple_of(4) {
             json.push(b' ');
         }
         let mut bin = self.bin.clone();
-        while bin.len() % 4 != 0 {
+        while !bin.len().is_multiple_of(4) {
             bin.push(0);
         }
         let total = 12 + 8 + json.len() + 8 + bin.len();

@@ -103,23 +103,5 @@ pub fn perturbed_edge_sign(o: [f64; 3], d: [f64; 3], p: [f64; 3], r: [f64; 3]) -
 /// `x` is the `f64` nearest to the exact value `exact` (no representable number is closer).
 pub fn is_nearest(x: f64, exact: &Q) -> bool {
     let err = (q(x) - exact).abs();
-    [next_up(x), next_down(x)].iter().all(|n| !n.is_finite() || (q(*n) - exact).abs() >= err)
-}
-
-/// The next `f64` above `x` (written out: `f64::next_up` is newer than the workspace MSRV).
-pub fn next_up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        x
-    } else if x == 0.0 {
-        f64::from_bits(1)
-    } else if x > 0.0 {
-        f64::from_bits(x.to_bits() + 1)
-    } else {
-        f64::from_bits(x.to_bits() - 1)
-    }
-}
-
-/// The next `f64` below `x`.
-pub fn next_down(x: f64) -> f64 {
-    -next_up(-x)
+    [x.next_up(), x.next_down()].iter().all(|n| !n.is_finite() || (q(*n) - exact).abs() >= err)
 }

@@ -455,8 +455,8 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
 // The products with SIMD kernels, and the assigning operators.
 
 /// Geometric product `Multivector * Multivector -> Multivector`, all 64 terms of the Cayley
-/// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=native`) it is
-/// the SIMD kernel of the module docs; elsewhere the 64 terms written out.
+/// table. On x86-64 with AVX2 and FMA (this workspace builds with `-C target-cpu=x86-64-v3`)
+/// it is the SIMD kernel of the module docs; elsewhere the 64 terms written out.
 impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]

@@ -1,5 +1,6 @@
 //! SIMD kernels for x86-64 with AVX2 and FMA, compiled only when the build enables both (as
-//! this workspace does with `-C target-cpu=native`); other targets use the portable expansions.
+//! this workspace does with `-C target-cpu=x86-64-v3`); other targets use the portable
+//! expansions.
 //!
 //! # The geometric product of two multivectors
 //!
@@ -48,7 +49,8 @@ pub(crate) fn geometric_f64(a: &[f64; 8], b: &[f64; 8]) -> [f64; 8] {
 /// `a b` for f32 multivectors in storage order.
 #[inline]
 pub(crate) fn geometric_f32(a: &[f32; 8], b: &[f32; 8]) -> [f32; 8] {
-    // SAFETY: as for `geometric_f64`.
+    // SAFETY: this module is compiled only when the build enables avx2 and fma, so the CPU
+    // running this code has them.
     unsafe { geometric_f32_avx2(a, b) }
 }
 
@@ -154,14 +156,16 @@ fn geometric_f32_avx2(a: &[f32; 8], b: &[f32; 8]) -> [f32; 8] {
 /// `a b` for f32 rotors `[s, e12, e23, e31]`; see `rotor_product_portable` for the rows.
 #[inline]
 pub(crate) fn rotor_product_f32(a: [f32; 4], b: [f32; 4]) -> [f32; 4] {
-    // SAFETY: as for `geometric_f64`.
+    // SAFETY: this module is compiled only when the build enables avx2 and fma, so the CPU
+    // running this code has them.
     unsafe { rotor_product_f32_fma(a, b) }
 }
 
 /// The reverse `[s, -e12, -e23, -e31]` of an f32 rotor, one XOR.
 #[inline]
 pub(crate) fn rotor_reverse_f32(a: [f32; 4]) -> [f32; 4] {
-    // SAFETY: as for `geometric_f64`.
+    // SAFETY: this module is compiled only when the build enables avx2 and fma (and so SSE),
+    // so the CPU running this code has them.
     unsafe { rotor_reverse_f32_sse(a) }
 }
 

@@ -1,4 +1,4 @@
-//! `raycast INPUT.obj RAYS.npy HITS.npy [options]`: traces an array of rays through a mesh.
+//! `raycast MESH RAYS.npy HITS.npy [options]`: traces an array of rays through a mesh.
 //!
 //! See `--help` for the array formats.
 
@@ -21,7 +21,7 @@ use scene::Mesh;
 /// Rays traced between two updates of the progress bar.
 const RAYS_PER_BLOCK: usize = 4096;
 
-/// Trace your own rays through a triangle mesh (Wavefront OBJ).
+/// Trace your own rays through a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz).
 ///
 /// RAYS is a NumPy .npy array of float32 or float64 (little-endian, C order) with shape
 /// (N, 6): origin x, y, z, direction x, y, z. Directions need not be unit length; t is
@@ -36,7 +36,7 @@ const RAYS_PER_BLOCK: usize = 4096;
 #[derive(Parser, Debug)]
 #[command(name = "raycast", version)]
 struct Cli {
-    /// The mesh (.obj).
+    /// The mesh: .obj, .ply, .stl, .gltf, .glb, .obj.gz or .ply.gz.
     input: PathBuf,
     /// The rays: .npy, float32 or float64, shape (N, 6).
     rays: PathBuf,

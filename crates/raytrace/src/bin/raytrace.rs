@@ -1,4 +1,4 @@
-//! `raytrace INPUT.obj OUTPUT WIDTH HEIGHT [options]`: renders a mesh, one ray per pixel.
+//! `raytrace MESH OUTPUT WIDTH HEIGHT [options]`: renders a mesh, one ray per pixel.
 //!
 //! The report's four arguments are kept; everything else is an option. See `--help`.
 
@@ -19,14 +19,15 @@ use render::frame::{Frame, MAX_SIDE, Mode};
 use render::output::{Format, ImageOutput};
 use scene::Mesh;
 
-/// Render a triangle mesh (Wavefront OBJ) to an image, one ray per pixel.
+/// Render a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz) to an image, one ray per
+/// pixel.
 ///
 /// The output format follows OUTPUT's extension: .png, .jpg/.jpeg (8-bit), .exr (32-bit
 /// float) or .npy (the mode's raw values).
 #[derive(Parser, Debug)]
 #[command(name = "raytrace", version)]
 struct Cli {
-    /// The mesh to render (.obj).
+    /// The mesh to render: .obj, .ply, .stl, .gltf, .glb, .obj.gz or .ply.gz.
     input: PathBuf,
     /// The image to write: .png, .jpg, .jpeg, .exr or .npy (replaced if it exists).
     output: PathBuf,

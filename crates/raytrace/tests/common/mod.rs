@@ -334,25 +334,7 @@ impl Job for AllHits<'_> {
 
 // ---- f64 geometry ----
 
-#[must_use]
-pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-#[must_use]
-pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-#[must_use]
-pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
-#[must_use]
-pub fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
+pub use intersect::vec3::{cross, dot, length as norm, sub};
 
 /// The distance between the line through `ray` and the segment `p q`.
 ///

@@ -314,7 +314,7 @@ mod tests {
     fn numpy_written_f4_2x3() -> Vec<u8> {
         let mut v = b"\x93NUMPY\x01\x00\x76\x00".to_vec();
         let mut h = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }".to_string();
-        while (10 + h.len() + 1) % 64 != 0 {
+        while !(10 + h.len() + 1).is_multiple_of(64) {
             h.push(' ');
         }
         h.push('\n');

@@ -1,21 +1,8 @@
-//! Conformance checks for [`Intersector`] implementations that claim to be watertight with
-//! the tie rule of the workspace (a ray exactly through a shared edge or vertex hits exactly
-//! one triangle) or to be safe at extreme coordinates. Each check panics with a message that
-//! names the kernel when the kernel fails it. Enabled by the `conformance` feature, for the
-//! back ends' tests:
-//!
-//! ```toml
-//! [dev-dependencies]
-//! intersect = { workspace = true, features = ["conformance"] }
-//! ```
+//! The tie rule on two triangles sharing an edge and on a fan around a vertex, and safety at
+//! coordinates near `f32::MAX`.
 
+use super::label;
 use crate::{Intersector, Ray, Real, Triangle};
-
-/// `"la f32"`, `"ga-plucker f64"`, ...: names a kernel in assertion messages.
-#[must_use]
-pub fn label<I: Intersector>() -> String {
-    format!("{} {}", I::NAME, core::any::type_name::<I::Real>())
-}
 
 /// How many of `tris` the ray from `origin` along `dir` hits, and which (indices).
 fn owners<I: Intersector + Default>(

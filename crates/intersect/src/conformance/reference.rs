@@ -1,74 +1,14 @@
-//! Shared by the integration tests: an independent `f64` reference solver, random scenes with
-//! fixed seeds, and a macro that runs one generic test on every kernel and precision.
+//! The independent `f64` reference solver, the tolerances the checks hold kernels to, and the
+//! fixed-seed generators of triangles and rays.
 
-#![allow(dead_code)] // Each test file uses a different part of this module.
-
-use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
-/// Runs `$check::<K>()` for every kernel of the crate in both precisions.
-#[macro_export]
-macro_rules! for_each_kernel {
-    ($check:ident) => {
-        $check::<ga_tracer::GaReport<f32>>();
-        $check::<ga_tracer::GaReport<f64>>();
-        $check::<ga_tracer::Ga<f32>>();
-        $check::<ga_tracer::Ga<f64>>();
-        $check::<ga_tracer::GaPlucker<f32>>();
-        $check::<ga_tracer::GaPlucker<f64>>();
-    };
-}
+use crate::vec3::{cross, length, sub};
+use crate::{Ray, Real, Triangle};
 
-pub use intersect::conformance::label;
-
-/// Whether `T` is `f32`.
-pub fn is_f32<T: Real>() -> bool {
-    T::MANTISSA_DIGITS == f32::MANTISSA_DIGITS
-}
-
-/// Relative precision expected of `t` in precision `T` for well-conditioned cases: `1e-5`
-/// for `f32`, `1e-12` for `f64` (about 80 and 4500 ulps).
-pub fn tolerance<T: Real>() -> f64 {
-    if is_f32::<T>() { 1e-5 } else { 1e-12 }
-}
-
-/// A fixed-seed generator.
-pub fn rng(seed: u64) -> Pcg64 {
-    Pcg64::seed_from_u64(seed)
-}
-
-/// The kernel's whole pipeline for one ray and triangle: `prepare`, `prepare_ray`,
-/// `intersect`, checking on the way that `occludes` agrees and that a hit is in range and
-/// finite.
-pub fn run<I: Intersector>(
-    k: &I,
-    tri: &Triangle<I::Real>,
-    ray: &Ray<I::Real>,
-    t_max: I::Real,
-) -> Option<TriangleHit<I::Real>> {
-    let prim = k.prepare(tri);
-    let rd = k.prepare_ray(ray);
-    let got = k.intersect(&prim, ray, &rd, t_max);
-    assert_eq!(k.occludes(&prim, ray, &rd, t_max), got.is_some(), "{}: occludes", label::<I>());
-    if let Some(h) = got {
-        assert!(
-            h.t > I::Real::ZERO && h.t <= t_max,
-            "{}: t = {} not in (0, {t_max}]",
-            label::<I>(),
-            h.t
-        );
-        assert!(
-            h.t.is_finite() && h.u.is_finite() && h.v.is_finite(),
-            "{}: {h:?} not finite",
-            label::<I>()
-        );
-    }
-    got
-}
-
-/// The intersection of a ray's line with a triangle's plane, solved independently of the
-/// kernels: Cramer's rule on `o + t d = a + u (b - a) + v (c - a)`, i.e.
+/// The intersection of a ray's line with a triangle's plane, solved independently of every
+/// kernel: Cramer's rule on `o + t d = a + u (b - a) + v (c - a)`, i.e.
 /// `[-d, b - a, c - a] (t, u, v) = o - a`, with 3x3 determinants by cofactor expansion, in
 /// `f64`.
 #[derive(Clone, Copy, Debug)]
@@ -86,18 +26,16 @@ pub struct Reference {
 impl Reference {
     /// The smallest barycentric weight: negative outside, its magnitude the distance to the
     /// nearest edge line in barycentric units.
+    #[must_use]
     pub fn margin(&self) -> f64 {
         self.u.min(self.v).min(1.0 - self.u - self.v)
     }
 
     /// Whether the exact answer is a hit within `(0, t_max]` (closed edges).
+    #[must_use]
     pub fn is_hit(&self, t_max: f64) -> bool {
         self.t > 0.0 && self.t <= t_max && self.margin() >= 0.0
     }
-}
-
-pub fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
 }
 
 /// `det [x y z]` (columns), by cofactor expansion along the first row.
@@ -106,16 +44,9 @@ fn det3(x: [f64; 3], y: [f64; 3], z: [f64; 3]) -> f64 {
         + z[0] * (x[1] * y[2] - x[2] * y[1])
 }
 
-fn norm(p: [f64; 3]) -> f64 {
-    (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
-}
-
-fn cross(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]]
-}
-
 /// The reference for a triangle and ray of either precision (converted to `f64` exactly);
 /// `None` if the ray is parallel to the plane or the triangle is degenerate.
+#[must_use]
 pub fn reference<T: Real>(tri: &Triangle<T>, ray: &Ray<T>) -> Option<Reference> {
     let (tri, ray): (Triangle<f64>, Ray<f64>) = (tri.cast(), ray.cast());
     let (e1, e2, s) = (sub(tri.b, tri.a), sub(tri.c, tri.a), sub(ray.origin, tri.a));
@@ -128,8 +59,28 @@ pub fn reference<T: Real>(tri: &Triangle<T>, ray: &Ray<T>) -> Option<Reference> 
         t: det3(s, e1, e2) / det,
         u: det3(minus_d, s, e2) / det,
         v: det3(minus_d, e1, s) / det,
-        cos: det.abs() / (norm(ray.dir) * norm(cross(e1, e2))),
+        cos: det.abs() / (length(ray.dir) * length(cross(e1, e2))),
     })
+}
+
+/// Whether `T` is `f32`.
+#[must_use]
+pub fn is_f32<T: Real>() -> bool {
+    T::MANTISSA_DIGITS == f32::MANTISSA_DIGITS
+}
+
+/// Relative precision expected of `t` in precision `T` for well-conditioned cases: `1e-5`
+/// for `f32`, `1e-12` for `f64` (about 80 and 4500 ulps: room for the conditioning of random
+/// well-shaped cases, far below any real error).
+#[must_use]
+pub fn tolerance<T: Real>() -> f64 {
+    if is_f32::<T>() { 1e-5 } else { 1e-12 }
+}
+
+/// A fixed-seed generator.
+#[must_use]
+pub fn rng(seed: u64) -> Pcg64 {
+    Pcg64::seed_from_u64(seed)
 }
 
 /// A point uniform in the cube `[-r, r]^3` around `centre`.
@@ -171,21 +122,46 @@ pub fn ray_towards(rng: &mut Pcg64, tri: &Triangle<f64>) -> Ray<f64> {
     Ray::new(origin, sub(target, origin).map(|x| x * scale))
 }
 
+/// A ray from a random origin in `[-3, 3]^3` towards the point of `tri`'s plane with
+/// barycentrics `(u, v)` drawn from `[-0.1, 1.0]` (about 40% hit), with a direction of
+/// random length. One ray in four has an axis-aligned direction or one with a zero component
+/// instead (then its aim is only approximate): the zeros kernels divide by or pick an axis by.
+pub fn ray_with_zero_components(rng: &mut Pcg64, tri: &Triangle<f64>) -> Ray<f64> {
+    let (u, v) = (rng.random_range(-0.1..1.0), rng.random_range(-0.1..1.0));
+    let target = tri.point(u, v);
+    let origin = point(rng, 3.0);
+    let scale = 2f64.powi(rng.random_range(-4..=4));
+    let mut dir = sub(target, origin).map(|x| x * scale);
+    if rng.random_bool(0.25) {
+        // Zero one or two components (keep the largest so the ray still goes somewhere).
+        let big = (0..3).max_by(|&i, &j| dir[i].abs().total_cmp(&dir[j].abs())).unwrap_or(0);
+        for (k, x) in dir.iter_mut().enumerate() {
+            if k != big && rng.random_bool(0.6) {
+                *x = 0.0;
+            }
+        }
+    }
+    Ray::new(origin, dir)
+}
+
 /// The next representable value below a positive finite `x`.
+#[must_use]
 pub fn prev_down<T: Real>(x: T) -> T {
     if is_f32::<T>() {
-        T::from_f64(f32::from_bits((x.to_f64() as f32).to_bits() - 1) as f64)
+        T::from_f64(f64::from((x.to_f64() as f32).next_down()))
     } else {
-        T::from_f64(f64::from_bits(x.to_f64().to_bits() - 1))
+        T::from_f64(x.to_f64().next_down())
     }
 }
 
-/// The triangle `tri` with each vertex converted to `T`.
+/// The triangle with each vertex converted to `T`.
+#[must_use]
 pub fn cast_tri<T: Real>(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Triangle<T> {
     Triangle::new(a, b, c).cast()
 }
 
 /// The ray with origin and direction converted to `T`.
+#[must_use]
 pub fn cast_ray<T: Real>(origin: [f64; 3], dir: [f64; 3]) -> Ray<T> {
     Ray::new(origin, dir).cast()
 }
