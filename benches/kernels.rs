@@ -19,7 +19,7 @@ use std::time::SystemTime;
 
 use backends::{Backend, Job, Precision, dispatch};
 use criterion::{Criterion, Throughput};
-use exact_tracer::Exact;
+use exact::Exact;
 use intersect::vec3::{cross, dot, sub};
 use intersect::{Intersector, Ray, Real, Triangle};
 use wedge_benches::clock::configured;

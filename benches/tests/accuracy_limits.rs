@@ -1,6 +1,6 @@
 //! The fast subset of the accuracy suite (`wedge_benches::accuracy`), holding every back end
 //! to the hard limits. Every verdict comes from the exact reference
-//! (`exact_tracer::Exact`), computed on exactly the values each back end saw.
+//! (`exact::Exact`), computed on exactly the values each back end saw.
 //!
 //! Sizes are `Sizes::test()`: the tile grid fully, a few thousand edge and vertex rays on the
 //! bunny at every step of the translation sweep, 100,000 random rays through the bunny's BVH.
@@ -246,10 +246,10 @@ fn every_backend_is_judged() {
     }
     let watertight = watertight();
     for p in Precision::ALL {
-        for b in [Backend::La, Backend::GaPlucker] {
+        for b in [Backend::LaWatertight, Backend::G3Watertight] {
             assert!(watertight.contains(&Subject::Kernel(b, p)), "{b:?} {p:?}");
         }
-        for b in [Backend::LaMt, Backend::Ga, Backend::GaReport] {
+        for b in [Backend::LaMt, Backend::G3Frame, Backend::G3Report] {
             assert!(!watertight.contains(&Subject::Kernel(b, p)), "{b:?} {p:?}");
         }
     }

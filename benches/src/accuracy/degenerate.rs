@@ -121,7 +121,7 @@ impl Soup {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use exact_tracer::Exact;
+    use exact::Exact;
     use intersect::Intersector;
 
     #[test]

@@ -7,7 +7,7 @@ use num_traits::{Signed, ToPrimitive, Zero};
 use super::fp::{pow2, ulp};
 
 /// The error of a reported hit distance `t` against the exact one, `t* = N / D` (the ray's
-/// parameter where its line meets the triangle's plane; see the `exact-tracer` crate docs for
+/// parameter where its line meets the triangle's plane; see the `exact` crate docs for
 /// `N` and `D`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TError {

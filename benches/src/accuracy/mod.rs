@@ -1,5 +1,5 @@
 //! Accuracy and numerical stability of every back end, judged by the exact reference
-//! (`exact_tracer::Exact`).
+//! (`exact::Exact`).
 //!
 //! The `accuracy` bench runs the suite and writes `results/accuracy.csv`,
 //! `results/stability.csv`, `results/runtime_vs_error.svg` and `results/SUMMARY.md`; the
@@ -15,7 +15,7 @@
 //!
 //! // Rays aimed exactly at points of the tile grid's shared edges.
 //! let set = edge_rays(&TriMesh::tiles(), 200, Aim::Exact, 7);
-//! let la = Subject::Kernel(Backend::La, Precision::F32);
+//! let la = Subject::Kernel(Backend::LaWatertight, Precision::F32);
 //! let (_, counts) = &run_aimed(&set, &[la, Subject::Exact], false)[0];
 //! assert_eq!(counts.rays, 200);
 //! assert_eq!(counts.cracks, 0); // watertight: nothing slips through
@@ -26,7 +26,7 @@
 //! The reference decides hit or miss exactly for the values it is given, so each back end is
 //! judged on exactly the values it saw: the suite's `f64` rays and triangles rounded to the
 //! back end's precision, converted back to `f64` (an exact conversion). Its tie rule (see
-//! the `exact-tracer` crate docs) makes a ray exactly through a shared edge or vertex hit
+//! the `exact` crate docs) makes a ray exactly through a shared edge or vertex hit
 //! exactly one of the triangles there. Distances are judged against the exact rational
 //! `t* = N / D` ([`metrics::t_error`]), not a rounded value, so an error in ulps is exact
 //! for `f64` back ends too.

@@ -11,8 +11,8 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use backends::{Backend, Guarantees, Job, Precision, dispatch};
 use bvh::accel::Accel;
-use exact_tracer::predicates::edge_sign;
-use exact_tracer::{Exact, Sign};
+use exact::predicates::edge_sign;
+use exact::{Exact, Sign};
 use intersect::{Intersector, Ray, Real, Triangle, TriangleHit};
 
 use super::metrics::{TError, facing_sign, t_error};
@@ -21,7 +21,7 @@ use super::rays::AimedSet;
 /// One row subject: a back end in one precision, or the exact reference (`f64` only).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Subject {
-    /// `exact_tracer::Exact`.
+    /// `exact::Exact`.
     Exact,
     /// A back end of the registry (`backends`), in one precision.
     Kernel(Backend, Precision),
@@ -466,7 +466,7 @@ mod tests {
         assert_eq!(&names[..5], ["la", "la-mt", "ga", "ga-report", "ga-plucker"]);
         assert_eq!(*names.last().unwrap(), "exact");
         assert!(Subject::Exact.claims_watertight() && Subject::Exact.guarantees().exact);
-        assert!(Subject::Kernel(Backend::GaPlucker, Precision::F32).claims_watertight());
+        assert!(Subject::Kernel(Backend::G3Watertight, Precision::F32).claims_watertight());
         assert!(!Subject::Kernel(Backend::LaMt, Precision::F64).claims_watertight());
     }
 }

@@ -21,7 +21,7 @@
 //!     }
 //! }
 //!
-//! assert_eq!(dispatch(Backend::La, Precision::F32, Name), ("la", 24));
+//! assert_eq!(dispatch(Backend::LaWatertight, Precision::F32, Name), ("la", 24));
 //! assert_eq!(dispatch(Backend::LaMt, Precision::F64, Name), ("la-mt", 53));
 //! // Every back end, in both precisions, runs the kernel the registry names.
 //! for backend in Backend::ALL {
@@ -29,13 +29,13 @@
 //!         assert_eq!(dispatch(backend, precision, Name).0, backend.name());
 //!     }
 //! }
-//! assert_eq!(Backend::from_name("ga-plucker"), Some(Backend::GaPlucker));
+//! assert_eq!(Backend::from_name("ga-plucker"), Some(Backend::G3Watertight));
 //! assert!(Backend::ALL.iter().any(|b| b.algebra() == Algebra::G3));
 //! ```
 //!
 //! # Adding a back end
 //!
-//! 1. Write the kernel in a kernel crate (`la-tracer`, `ga-tracer`, or a new one added to this
+//! 1. Write the kernel in a kernel crate (`kernels-la`, `kernels-g3`, or a new one added to this
 //!    crate's dependencies): a type generic over `f32` and `f64` with a `new()` constructor,
 //!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`
 //!    and `GUARANTEES`, and its own tests (one call per precision to the conformance checks of
@@ -108,15 +108,15 @@ macro_rules! registry {
 
 registry! {
     /// glam, watertight kernel (Woop, Benthin, Wald 2013): no cracks between triangles.
-    La => la_tracer::Watertight,
+    LaWatertight => kernels_la::Watertight,
     /// glam, Moller-Trumbore kernel.
-    LaMt => la_tracer::MollerTrumbore,
+    LaMt => kernels_la::MollerTrumbore,
     /// geometric algebra, the report's method with the per-triangle part precomputed.
-    Ga => ga_tracer::Ga,
+    G3Frame => kernels_g3::G3Frame,
     /// geometric algebra, the report's method step by step, as written.
-    GaReport => ga_tracer::GaReport,
-    /// geometric algebra, watertight edge tests as trivectors (Plucker-like).
-    GaPlucker => ga_tracer::GaPlucker,
+    G3Report => kernels_g3::G3Report,
+    /// geometric algebra, watertight: which side of each edge the ray passes, as a trivector.
+    G3Watertight => kernels_g3::G3Watertight,
 }
 
 impl Backend {
@@ -270,13 +270,13 @@ mod tests {
             let (declared, digits) = dispatch(b, p, Dispatched);
             (declared.name, digits)
         };
-        assert_eq!(name_digits(Backend::La, Precision::F32), ("la", 24));
-        assert_eq!(name_digits(Backend::La, Precision::F64), ("la", 53));
+        assert_eq!(name_digits(Backend::LaWatertight, Precision::F32), ("la", 24));
+        assert_eq!(name_digits(Backend::LaWatertight, Precision::F64), ("la", 53));
         assert_eq!(name_digits(Backend::LaMt, Precision::F32), ("la-mt", 24));
         assert_eq!(name_digits(Backend::LaMt, Precision::F64), ("la-mt", 53));
-        assert_eq!(name_digits(Backend::Ga, Precision::F32), ("ga", 24));
-        assert_eq!(name_digits(Backend::GaReport, Precision::F64), ("ga-report", 53));
-        assert_eq!(name_digits(Backend::GaPlucker, Precision::F32), ("ga-plucker", 24));
+        assert_eq!(name_digits(Backend::G3Frame, Precision::F32), ("ga", 24));
+        assert_eq!(name_digits(Backend::G3Report, Precision::F64), ("ga-report", 53));
+        assert_eq!(name_digits(Backend::G3Watertight, Precision::F32), ("ga-plucker", 24));
     }
 
     #[test]
@@ -295,17 +295,17 @@ mod tests {
         let wt = Guarantees { watertight: true, exact: false };
         let none = Guarantees::default();
         let expect = [
-            (Backend::La, Algebra::La, Method::Watertight, wt),
+            (Backend::LaWatertight, Algebra::La, Method::Watertight, wt),
             (Backend::LaMt, Algebra::La, Method::MollerTrumbore, none),
-            (Backend::Ga, Algebra::G3, Method::Frame, none),
-            (Backend::GaReport, Algebra::G3, Method::Report, none),
-            (Backend::GaPlucker, Algebra::G3, Method::Watertight, wt),
+            (Backend::G3Frame, Algebra::G3, Method::Frame, none),
+            (Backend::G3Report, Algebra::G3, Method::Report, none),
+            (Backend::G3Watertight, Algebra::G3, Method::Watertight, wt),
         ];
         for (b, algebra, method, guarantees) in expect {
             assert_eq!((b.algebra(), b.method(), b.guarantees()), (algebra, method, guarantees));
         }
         // The reference is not a `--backend`, but declares itself the same way.
-        let exact = Declared::of::<exact_tracer::Exact>();
+        let exact = Declared::of::<exact::Exact>();
         assert_eq!(exact.guarantees, Guarantees { watertight: true, exact: true });
         assert_eq!((exact.name, exact.method), ("exact", Method::Watertight));
     }
@@ -319,8 +319,8 @@ mod tests {
         }
         assert_eq!(Backend::from_name("exact"), None);
         assert_eq!(Backend::from_name("LA"), None);
-        assert_eq!(Backend::default(), Backend::La);
-        assert_eq!(Backend::BASELINE, Backend::La);
+        assert_eq!(Backend::default(), Backend::LaWatertight);
+        assert_eq!(Backend::BASELINE, Backend::LaWatertight);
     }
 
     #[test]

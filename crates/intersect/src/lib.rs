@@ -3,7 +3,7 @@
 //! This crate holds plain data ([`Ray`], [`Triangle`], [`Hit`], and [`Algebra`], [`Method`],
 //! [`Guarantees`] by which a kernel describes itself) and one trait,
 //! [`Intersector`]. The renderer (`render`) is generic over it and knows no back end; the back
-//! ends (`la-tracer` with glam, `ga-tracer` with geometric algebra) implement it and know no
+//! ends (`kernels-la` with glam, `kernels-g3` with geometric algebra) implement it and know no
 //! renderer. Beside them live only what every back end needs of the seam: the exact
 //! [`is_degenerate`] test, the `[f64; 3]` helpers of [`vec3`], and, behind the `conformance`
 //! feature, the checks every back end's tests run (`conformance`).

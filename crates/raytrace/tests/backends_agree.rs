@@ -116,7 +116,9 @@ fn on_axis_views_put_rays_exactly_through_edges() {
         // The premise: many rays pass exactly through an edge of the triangle they hit.
         let la64 = traced
             .iter()
-            .find(|t| t.config == Config { backend: Backend::La, precision: Precision::F64 })
+            .find(|t| {
+                t.config == Config { backend: Backend::LaWatertight, precision: Precision::F64 }
+            })
             .expect("la-f64 is among the configurations");
         let exact = (0..scene.pixels())
             .filter(|&p| {
@@ -312,7 +314,10 @@ const SYMMETRIC_VIEW: Rules =
 /// `la` against `ga` in the same precision.
 fn la_and_ga(a: Config, b: Config) -> bool {
     a.precision == b.precision
-        && matches!((a.backend, b.backend), (Backend::La, Backend::Ga) | (Backend::Ga, Backend::La))
+        && matches!(
+            (a.backend, b.backend),
+            (Backend::LaWatertight, Backend::G3Frame) | (Backend::G3Frame, Backend::LaWatertight)
+        )
 }
 
 /// Both back ends watertight (`la`, `ga-plucker`: their kernels' guarantees).

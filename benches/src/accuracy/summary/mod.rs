@@ -158,7 +158,7 @@ pub fn render(
     let _ = writeln!(s, "## Definitions\n");
     let _ = writeln!(
         s,
-        "Every figure is judged by the exact reference (`exact-tracer`) on exactly the values \
+        "Every figure is judged by the exact reference (`exact`) on exactly the values \
          each back end saw (its precision's rounding of the suite's rays and triangles). \
          A **disagreement** is a hit where the reference misses or the reverse (for aimed rays: \
          any outcome other than the reference's single triangle). A **crack** is a ray aimed \

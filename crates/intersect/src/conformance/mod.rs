@@ -7,8 +7,8 @@
 //! #[test]
 //! fn la_conforms() {
 //!     // Held to what the kernel declares in `Intersector::GUARANTEES`.
-//!     check_all::<la_tracer::Watertight<f32>>();
-//!     check_all::<la_tracer::Watertight<f64>>();
+//!     check_all::<kernels_la::Watertight<f32>>();
+//!     check_all::<kernels_la::Watertight<f64>>();
 //! }
 //! ```
 //!

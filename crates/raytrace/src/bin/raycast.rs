@@ -44,7 +44,7 @@ struct Cli {
     /// (replaced if it exists; never the rays or the mesh).
     hits: PathBuf,
     /// Ray-triangle back end.
-    #[arg(long, value_enum, default_value_t = Backend::La)]
+    #[arg(long, value_enum, default_value_t = Backend::LaWatertight)]
     backend: Backend,
     /// Precision of rays, triangles and kernel (float64 rays are rounded for f32).
     #[arg(long, value_enum, default_value_t = Precision::F32)]

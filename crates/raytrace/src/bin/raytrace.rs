@@ -38,7 +38,7 @@ struct Cli {
     #[arg(value_parser = side(), allow_negative_numbers = true)]
     height: u32,
     /// Ray-triangle back end.
-    #[arg(long, value_enum, default_value_t = Backend::La)]
+    #[arg(long, value_enum, default_value_t = Backend::LaWatertight)]
     backend: Backend,
     /// Precision of rays, triangles and kernel.
     #[arg(long, value_enum, default_value_t = Precision::F32)]
