@@ -50,7 +50,8 @@ fn aimed_rows(subjects: &[Subject]) -> Vec<StabilityRow> {
     }
     for r in &rows {
         println!(
-            "{:>10} {:>6} {:<10} {:<8} {:>10} {:>4}: {:>5} rays, {:>5} ties, {} cracks, {} double hits, {} wrong side",
+            "{:>10} {:>6} {:<10} {:<8} {:>10} {:>4}: {:>5} rays, {:>5} ties, {} cracks, \
+             {} double hits, {} wrong side",
             r.family,
             r.scene,
             r.variant,
@@ -141,7 +142,8 @@ fn ordinary_rays_agree_with_the_reference_and_distances_are_accurate() {
         let f32 = s.precision() == Precision::F32;
         let max_per_million = if f32 { 10.0 } else { 1.0 };
         println!(
-            "{:>10} {}: {} rays, {} exact hits, {} disagreements ({:.1}/M), wrong triangle {:?}/M, t median {:?} ulps, p99.9 {:?}, max {:?}",
+            "{:>10} {}: {} rays, {} exact hits, {} disagreements ({:.1}/M), \
+             wrong triangle {:?}/M, t median {:?} ulps, p99.9 {:?}, max {:?}",
             row.backend,
             row.precision,
             row.rays,
@@ -183,7 +185,8 @@ fn degenerate_input_never_panics_is_never_hit_and_gives_no_nan() {
     let rows = degenerate_rows(&Sizes::test(), &Subject::all());
     let describe = |r: &StabilityRow| {
         format!(
-            "{} {} {}: panics {:?}, degenerate hits {:?}, NaN {} (NaN or inf {}), contract violations {:?}",
+            "{} {} {}: panics {:?}, degenerate hits {:?}, NaN {} (NaN or inf {}), \
+             contract violations {:?}",
             r.variant,
             r.backend,
             r.precision,
@@ -207,7 +210,8 @@ fn grazing_axis_aligned_and_on_surface_rays_give_no_nan_and_no_panic() {
         let rows = ray_family_rows(&sizes, &mesh, &Subject::all());
         for r in &rows {
             println!(
-                "{:>12} {:>6} {:<24} {:>10} {}: {} tests, {} disagreements ({} false hits), NaN or inf {}",
+                "{:>12} {:>6} {:<24} {:>10} {}: {} tests, {} disagreements ({} false hits), \
+                 NaN or inf {}",
                 r.family,
                 r.scene,
                 r.variant,

@@ -28,9 +28,9 @@ pub struct Soup {
 /// `point*` (three equal vertices), `repeated-vertex*` (two equal), `collinear*` (the middle
 /// vertex the exact midpoint), `collinear-far*` (`c = a + 3 (b - a)`), `needle` (height
 /// `2^-30` of its length), `needle-f32` (height one `f32` ulp of its length), `huge`
-/// (coordinates up to `1e18`), `tiny` (size `2^-60`, about `1e-18`, beside the huge one), `subnormal-f32`
-/// (size `1e-40`: subnormal in `f32`), `f32-max` (coordinates near `f32::MAX`), `nan-vertex*`,
-/// `inf-vertex*` (the reference counts non-finite triangles as degenerate).
+/// (coordinates up to `1e18`), `tiny` (size `2^-60`, about `1e-18`, beside the huge one),
+/// `subnormal-f32` (size `1e-40`: subnormal in `f32`), `f32-max` (coordinates near `f32::MAX`),
+/// `nan-vertex*`, `inf-vertex*` (the reference counts non-finite triangles as degenerate).
 #[must_use]
 pub fn soup(copies: usize, rays_per_triangle: usize, seed: u64) -> Soup {
     let mut rng = SplitMix64::new(seed);

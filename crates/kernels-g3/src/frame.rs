@@ -51,10 +51,10 @@
 //! `u` and `s` with the three vectors `n`, `m_b`, `m_c`, and two products on top.
 //!
 //! With `σ = sign(den)`: inside is `σU >= 0`, `σV >= 0`, `σ(U + V) <= |den|` (closed edges),
-//! and `0 < t <= t_max` is `0 < σ num <= t_max |den|`. `σx` is a sign-bit flip, not a
-//! multiply. `den = 0` (ray parallel to the plane, or a degenerate triangle, stored with
-//! `n = 0`) fails the distance test for every `t_max`. Only then does the kernel divide:
-//! `t = num / den`, `u = U / den`, `v = V / den`.
+//! and `0 < t <= t_max` is `0 < σ num <= t_max |den|`. `σx` is a product with `±1`,
+//! exact (see below for why not a bit operation). `den = 0` (ray parallel to the plane, or a
+//! degenerate triangle, stored with `n = 0`) fails the distance test for every `t_max`. Only then
+//! does the kernel divide: `t = num / den`, `u = U / den`, `v = V / den`.
 //!
 //! # Per-triangle data: 12 scalars, stored by axis
 //!
@@ -76,16 +76,14 @@
 //! products of `s` and of `u` with `n`, `m_b`, `m_c`, 3 vector operations each; `U` and `V`, 1
 //! multiply and 1 multiply-add after broadcasting `num` and `den`; the edge test, 2 additions,
 //! 2 minima and 1 comparison on scalars; the distance test, 2 multiplies (`t_max |den|`, the
-//! slack below) and 2 comparisons. The sign flips `σx` are bit operations. About 25 operations,
-//! 13 of them on four lanes; written out on scalars, 33 (Moller-Trumbore: 27 and a reciprocal).
-//! Elsewhere the same expressions run lane by lane with the same roundings (`src/lanes.rs`),
-//! so both forms give the same bits. One division, only for a hit.
+//! slack below) and 2 comparisons. The sign flips `σx` are exact products with `±1`. About 25
+//! operations, 13 of them on four lanes; written out on scalars, 33 (Moller-Trumbore: 27 and a
+//! reciprocal). Elsewhere the same expressions run lane by lane with the same roundings
+//! (`src/lanes.rs`), so both forms give the same bits. One division, only for a hit.
 //!
-//! Against the previous scalar form (`q = num u - den s`, then `q · m_b` and `q · m_c`, three
-//! scalar inner products after two), the four-lane form took the bunny's 1M incoherent rays
-//! (f32, one thread) from 5.40 to 5.60 Mrays/s, with the watertight `la` kernel at 5.79 (medians
-//! of 9 alternating processes), and primary rays from 20.1 to 20.7 (`la`: 17.1). The figures of
-//! every back end are in `results/interleaved.csv`.
+//! The four-lane form replaced a scalar one (`q = num u - den s`, then `q · m_b` and `q · m_c`,
+//! three scalar inner products after two) because it measured faster; the figures of that and
+//! every later choice below are in `results/README.md` ("Kernel design experiments").
 //!
 //! # One predictable branch: the edges first
 //!
@@ -98,19 +96,14 @@
 //! edge test fails for nearly every triangle tested (about 11% of the tests on the bunny's
 //! incoherent rays are hits), so it is decided first, with the three comparisons folded into
 //! one (`min(σU, σV, |den| - σ(U + V)) >= 0`, the minima being branch-free instructions), and
-//! the distance test runs only for rays inside the edges. On the bunny's 1M incoherent rays
-//! (f32, one thread) the distance-first order ran at 4.0 Mrays/s against the watertight `la`
-//! kernel's 5.5; edges first, at 5.1 (medians of alternating runs; `results/README.md`).
-//! Combining the comparisons with `&` or `|` instead of a minimum does not give one branch:
-//! the compiler splits a branch on them into a chain of branches, the first of them the same
-//! coin toss (measured again with `|`: 3.99 against 4.72 Mrays/s).
+//! the distance test runs only for rays inside the edges. Combining the comparisons with `&` or
+//! `|` instead of a minimum does not give one branch: the compiler splits a branch on them into
+//! a chain of branches, the first of them the same coin toss.
 //!
 //! The minimum is the processor's (`x < y ? x : y`, one `minss`), not `f32::min`, whose
 //! NaN rule costs a compare and a blend per minimum and needed a second branch for a NaN `w`;
 //! and σ is taken off by a product with `±1` rather than a bit operation, which the compiler
-//! ran through the integer registers. Together: incoherent rays 6.02 against 5.81 Mrays/s,
-//! primary rays 21.0 against 18.4 (`la`: 5.96 and 15.1; medians of 9 and 5 alternating
-//! processes, a busy host).
+//! ran through the integer registers.
 //!
 //! # Not watertight
 //!

@@ -56,9 +56,9 @@
 //!
 //! # Accuracy
 //!
-//! Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`. [`G3Frame`] and [`G3Watertight`]
-//! decide on undivided values and divide once; their barycentrics satisfy `u, v >= 0` and
-//! `u + v <= 1` up to the rounding of that division.
+//! Every reported hit has `0 < t <= t_max` and finite `t`, `u`, `v`. [`G3Frame`] and
+//! [`G3Watertight`] decide on undivided values and divide once; their barycentrics satisfy `u, v >=
+//! 0` and `u + v <= 1` up to the rounding of that division.
 //!
 //! `tests/accuracy.rs` compares every kernel with an independent `f64` solver on 40,000 random
 //! triangles and rays (half of them aimed within `1e-2` to `1e-15` of an edge), for rays at

@@ -66,13 +66,13 @@
 //!    can leave a crack. An earlier version that evaluated `(sa ∧ sb) ∧ u` with the 3D outer
 //!    products (exactly antisymmetric too, but with rounded signs) did: about 1.5% of the
 //!    rays aimed exactly at vertices of the tile grid in `tests/watertight.rs` passed
-//!    through, in `f32` and `f64`, though none of those aimed at edges. Here the sign is exact: rounding is monotonic, so `xa yb > ya xb`
-//!    implies `fl(xa yb) >= fl(ya xb)`, and a non-zero computed difference has the exact sign
-//!    of `xa yb - ya xb` for the rounded coordinates. An exact zero may hide either sign, so
-//!    then all three values are recomputed exactly (Shewchuk's adaptive `orient2d`, on
-//!    coordinates that convert to `f64` exactly). Every sign used is then the exact
-//!    orientation of the same projected points, a consistent planar picture of the mesh seen
-//!    along the ray, so the triangles around a vertex cover its neighbourhood. The tests find
+//!    through, in `f32` and `f64`, though none of those aimed at edges. Here the sign is exact:
+//!    rounding is monotonic, so `xa yb > ya xb` implies `fl(xa yb) >= fl(ya xb)`, and a non-zero
+//!    computed difference has the exact sign of `xa yb - ya xb` for the rounded coordinates. An
+//!    exact zero may hide either sign, so then all three values are recomputed exactly (Shewchuk's
+//!    adaptive `orient2d`, on coordinates that convert to `f64` exactly). Every sign used is then
+//!    the exact orientation of the same projected points, a consistent planar picture of the mesh
+//!    seen along the ray, so the triangles around a vertex cover its neighbourhood. The tests find
 //!    no crack, through edges or vertices, near the origin or `1e3` grid sizes away from it.
 //! 3. **Ties: exactly one owner.** A ray exactly through an edge (an exact zero) would hit
 //!    both closed neighbours. Instead a zero gets the sign it would have if the ray were
@@ -104,8 +104,8 @@
 //! operations with fused multiply-adds), 3 edge values (2 multiplies and a subtraction each),
 //! the sign test (the outside test, then 3 comparisons with zero for the fallback), the
 //! distance (2 inner products, 2 multiplies, 2 comparisons) and, for a hit, one division and 2
-//! more: about 45 operations. [`G3WatertightPrim`] stores the triangle by axis, one vertex per lane,
-//! so on four lanes (x86-64 with AVX2 and FMA, as this workspace builds) the translation is 3
+//! more: about 45 operations. [`G3WatertightPrim`] stores the triangle by axis, one vertex per
+//! lane, so on four lanes (x86-64 with AVX2 and FMA, as this workspace builds) the translation is 3
 //! vector subtractions, the coordinates of all three vertices 6 vector operations, and the
 //! three edge values 4 lane rotations, 2 multiplies and 1 subtraction, each lane computing
 //! exactly the scalar expression, so every argument below holds lane by lane
@@ -113,18 +113,13 @@
 //! branch on `w_b` or `w_c` times `w_a`'s sign (`±1`, exact) being below zero, and a
 //! predictable one on `w_a` being neither zero nor NaN. A value below zero is not zero or
 //! NaN either, so two edge values of exact, opposite signs put the ray outside, whatever the
-//! third. Only then are the three values checked for zeros (the fallback). About 25 operations before the distance test, against 24
-//! for [`crate::G3Frame`]. Per ray: an orthonormal basis (a square root and two divisions).
+//! third. Only then are the three values checked for zeros (the fallback). About 25
+//! operations before the distance test, against 24 for [`crate::G3Frame`]. Per ray: an orthonormal
+//! basis (a square root and two divisions).
 //!
-//! The four-lane form and the one-branch sign test took the bunny's 1M incoherent rays (f32,
-//! one thread) from 3.22 to 3.68 Mrays/s, with the watertight `la` kernel at 3.83 on that
-//! (busier) host, and primary rays from 13.5 to 16.9 against `la`'s 17.1 (medians of 9 and 5
-//! alternating processes). Moving the outside test first, with the sign taken off by a
-//! product with `±1` instead of a bit operation and a minimum, took a miss from 4.6-4.9 to
-//! 4.1-4.2 ns against `la`'s 3.5-3.8 (f32, 2,048 triangles and rays in cache, the minimum of
-//! 400 rounds, three processes each); hits stayed at 10.5-11 ns. On the bunny's 1M incoherent
-//! rays: 5.70 against 5.25 Mrays/s (`la`: 5.62), primary rays unchanged at 19.1 (`la`: 17.3;
-//! medians of 9 and 5 alternating processes, a busy host).
+//! The four-lane form, the one-branch sign test and the outside test first were each kept
+//! because they measured faster; the figures are in `results/README.md` ("Kernel design
+//! experiments").
 
 use core::marker::PhantomData;
 

@@ -58,7 +58,8 @@ use crate::{GlamReal, is_degenerate};
 ///
 /// Fast and small (one vertex and two edges per triangle, nothing per ray), but not
 /// watertight: rays through shared edges can miss both triangles. See the
-/// [module derivation](crate::moller_trumbore) and the [crate table](crate#what-each-kernel-guarantees).
+/// [module derivation](crate::moller_trumbore) and the [crate
+/// table](crate#what-each-kernel-guarantees).
 ///
 /// ```
 /// use intersect::{Intersector, Ray, Triangle};

@@ -302,8 +302,8 @@ fn square_rays() -> Vec<[f64; 6]> {
 
 /// Barycentrics `(u, v)` of point `(x, y)` in triangle (a, b, c) of the square.
 fn barycentrics(tri: usize, x: f64, y: f64) -> (f64, f64) {
-    // Triangle 0: a = (-1,-1), b = (-1,1), c = (1,1); triangle 1: a = (-1,-1), b = (1,1), c = (1,-1).
-    // p - a = u (b - a) + v (c - a), solved by hand for each.
+    // Triangle 0: a = (-1,-1), b = (-1,1), c = (1,1); triangle 1: a = (-1,-1), b = (1,1), c =
+    // (1,-1). p - a = u (b - a) + v (c - a), solved by hand for each.
     let (px, py) = (x + 1.0, y + 1.0);
     if tri == 0 { ((py - px) / 2.0, px / 2.0) } else { (py / 2.0, (px - py) / 2.0) }
 }

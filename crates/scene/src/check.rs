@@ -90,7 +90,8 @@ fn check_vertex(words: &[&str]) -> Result<(), Problem> {
         [_, _, _] => {}
         _ => {
             return Err(Problem::Malformed(format!(
-                "a vertex has 3 coordinates, optionally followed by w or by r g b; found {} numbers",
+                "a vertex has 3 coordinates, optionally followed by w or by r g b; \
+                 found {} numbers",
                 words.len()
             )));
         }
@@ -175,7 +176,8 @@ fn check_face(words: &[&str], so_far: &Counts, totals: &Counts) -> Result<(), Pr
             }
             if index < 0 && index.unsigned_abs() > before as u64 {
                 return Err(Problem::Malformed(format!(
-                    "relative {prefix} index {index} is out of range ({before} {plural} before this line)"
+                    "relative {prefix} index {index} is out of range \
+                     ({before} {plural} before this line)"
                 )));
             }
         }

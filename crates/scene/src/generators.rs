@@ -193,13 +193,15 @@ pub const SCENES: [Scene; 6] = [
     Scene {
         file_name: "star.obj",
         summary: "The report's star: a flat five-pointed star, 10 triangles fanned around its \
-                  centre, radius 1.5 in the plane z = 5, front (counter-clockwise) face towards -z.",
+                  centre, radius 1.5 in the plane z = 5, front (counter-clockwise) face towards \
+                  -z.",
         camera: "as built: camera at the origin looking along +z (the report's camera).",
         build: star,
     },
     Scene {
         file_name: "cube.obj",
-        summary: "Unit cube centred at the origin (corners at +-0.5), 12 triangles, outward winding.",
+        summary: "Unit cube centred at the origin (corners at +-0.5), 12 triangles, outward \
+                  winding.",
         camera: "camera at (0, 0, -3), or translate the mesh by +3 along z.",
         build: cube,
     },
@@ -214,7 +216,8 @@ pub const SCENES: [Scene; 6] = [
         file_name: "torus.obj",
         summary: "Torus around the z axis at the origin, major radius 1, minor radius 0.3, \
                   48 x 24 quads split into 2304 triangles over 1152 shared vertices.",
-        camera: "camera at (0, 0, -4): the ring seen face-on, hole in the middle; or translate the mesh by +4 along z.",
+        camera: "camera at (0, 0, -4): the ring seen face-on, hole in the middle; or translate the \
+                 mesh by +4 along z.",
         build: torus,
     },
     Scene {

@@ -53,13 +53,28 @@ struct Cli {
     #[arg(long, value_enum, default_value_t = CameraArg::Auto)]
     camera: CameraArg,
     /// Eye position X,Y,Z (overrides the --camera placement's).
-    #[arg(long, value_name = "X,Y,Z", value_parser = raytrace::parse_vec3, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        value_parser = raytrace::parse_vec3,
+        allow_hyphen_values = true
+    )]
     eye: Option<[f64; 3]>,
     /// Point looked at X,Y,Z (overrides the --camera placement's).
-    #[arg(long, value_name = "X,Y,Z", value_parser = raytrace::parse_vec3, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        value_parser = raytrace::parse_vec3,
+        allow_hyphen_values = true
+    )]
     look_at: Option<[f64; 3]>,
     /// Up direction X,Y,Z [default: 0,1,0].
-    #[arg(long, value_name = "X,Y,Z", value_parser = raytrace::parse_vec3, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        value_parser = raytrace::parse_vec3,
+        allow_hyphen_values = true
+    )]
     up: Option<[f64; 3]>,
     /// Vertical field of view in degrees, between 0 and 180.
     #[arg(long, value_name = "DEG", default_value_t = DEFAULT_FOV_DEG, value_parser = parse_fov,
