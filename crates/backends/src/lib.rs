@@ -2,10 +2,12 @@
 //! end" reads [`Backend::ALL`] and runs work through [`dispatch`], so that no list of back
 //! ends is written anywhere else.
 //!
-//! What a back end is (its `--backend` name, [`Algebra`], [`Method`] and [`Guarantees`]) is
+//! What a back end is (its `--backend` name, [`Algebra`], [`Method`], [`Guarantees`] and
+//! whether it is a cell of the method x algebra matrix or a labelled variant beside one) is
 //! declared by its kernel, as the consts of [`Intersector`]; the registry reads them from the
-//! kernel ([`Backend::declared`], [`Backend::name`], [`Backend::algebra`], ...) and keeps
-//! nothing of its own but the one-line description shown by `--help`.
+//! kernel ([`Backend::declared`], [`Backend::name`], [`Backend::algebra`],
+//! [`Backend::variant`], ...) and keeps nothing of its own but the one-line description shown
+//! by `--help`.
 //!
 //! ```
 //! use backends::{Algebra, Backend, Job, Precision, dispatch};
@@ -33,12 +35,41 @@
 //! assert!(Backend::ALL.iter().any(|b| b.algebra() == Algebra::G3));
 //! ```
 //!
+//! # The method x algebra matrix
+//!
+//! Rows are methods ([`Method`]), columns algebras ([`Algebra`]); a *cell* is the back end
+//! that implements one method in one algebra ([`Backend::variant`] is `None`), and
+//! [`Backend::cell`] finds it. A back end that implements a cell's method and algebra but
+//! breaks one of the rules below (hand intrinsics, per-test code on raw arrays) is a
+//! *variant*: it is listed and measured beside its cell, labelled with what it does
+//! differently (`Some("hand four-lane SIMD over arrays")`), and never stands for the cell.
+//!
+//! ## Rules for a fair row
+//!
+//! A row compares algebras, so everything but the algebra is held fixed across it, and each
+//! kernel's module documentation states what is needed to check it by review:
+//!
+//! 1. **The same method**: the same mathematics in every cell of a row (the method's
+//!    derivation is written once per cell, in the cell's own terms, and says which cell it
+//!    mirrors).
+//! 2. **The same per-triangle data**: the same quantities precomputed at
+//!    [`Intersector::prepare`], in the same precision, the bytes per triangle reported in the
+//!    kernel's documentation (a cell may not precompute what its neighbours compute per ray).
+//! 3. **The same decision order and tie rule**: the tests made in the same order (which
+//!    decides which branch ends most tests), the same closed or half-open edges, the same tie
+//!    rule and exact fallback for watertight methods, the same `t_max` slack.
+//! 4. **Per-test code in the cell's own algebra types**: glam `Vec3A` / `DVec3` for
+//!    [`Algebra::La`], `ga::g3` types and their operators (`^`, `|`, `*`, `&`) for
+//!    [`Algebra::G3`], with no hand intrinsics and no per-test code on raw arrays or lanes;
+//!    what the generated products and the compiler make of that is what is measured, so that
+//!    the cost of writing a tracer in the algebra is the cost reported.
+//!
 //! # Adding a back end
 //!
 //! 1. Write the kernel in a kernel crate (`kernels-la`, `kernels-g3`, or a new one added to this
 //!    crate's dependencies): a type generic over `f32` and `f64` with a `new()` constructor,
-//!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`
-//!    and `GUARANTEES`, and its own tests (one call per precision to the conformance checks of
+//!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`,
+//!    `GUARANTEES` and `VARIANT` (`None` for a cell), and its own tests (one call per precision to the conformance checks of
 //!    `intersect`).
 //! 2. Add one entry to the `registry!` list in this file: a one-line description (the
 //!    variant's doc and the `--help` text), the variant, and the kernel's path.
@@ -145,6 +176,23 @@ impl Backend {
         self.declared().guarantees
     }
 
+    /// The kernel's [`Intersector::VARIANT`]: `None` for the cell of its method and algebra,
+    /// `Some(what)` for a labelled variant beside that cell, `what` saying how it departs
+    /// from the [rules for a fair row](crate#rules-for-a-fair-row).
+    #[must_use]
+    pub const fn variant(self) -> Option<&'static str> {
+        self.declared().variant
+    }
+
+    /// The cell of the method x algebra matrix for `method` and `algebra`: the back end with
+    /// that method and algebra that is not a variant, if there is one.
+    #[must_use]
+    pub fn cell(method: Method, algebra: Algebra) -> Option<Backend> {
+        Backend::ALL
+            .into_iter()
+            .find(|b| b.method() == method && b.algebra() == algebra && b.variant().is_none())
+    }
+
     /// The back end the others are compared with (the `ratio_to_la` columns of `results/`)
     /// and the default of `--backend`.
     pub const BASELINE: Backend = Backend::ALL[0];
@@ -184,6 +232,8 @@ pub struct Declared {
     pub method: Method,
     /// [`Intersector::GUARANTEES`].
     pub guarantees: Guarantees,
+    /// [`Intersector::VARIANT`].
+    pub variant: Option<&'static str>,
 }
 
 impl Declared {
@@ -196,6 +246,7 @@ impl Declared {
             algebra: I::ALGEBRA,
             method: I::METHOD,
             guarantees: I::GUARANTEES,
+            variant: I::VARIANT,
         }
     }
 }
@@ -308,6 +359,26 @@ mod tests {
         let exact = Declared::of::<exact::Exact>();
         assert_eq!(exact.guarantees, Guarantees { watertight: true, exact: true });
         assert_eq!((exact.name, exact.method), ("exact", Method::Watertight));
+    }
+
+    /// `ga` and `ga-plucker` are hand-SIMD variants; every other back end is a cell, and no
+    /// two cells share a method and an algebra.
+    #[test]
+    fn variants_are_labelled_and_cells_are_unique() {
+        let simd = Some("hand four-lane SIMD over arrays");
+        assert_eq!(Backend::G3Frame.variant(), simd);
+        assert_eq!(Backend::G3Watertight.variant(), simd);
+        assert_eq!(Backend::LaWatertight.variant(), None);
+        assert_eq!(Backend::cell(Method::Watertight, Algebra::La), Some(Backend::LaWatertight));
+        assert_eq!(Backend::cell(Method::Report, Algebra::G3), Some(Backend::G3Report));
+        assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
+        for (i, b) in Backend::ALL.into_iter().enumerate() {
+            assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");
+            let same_cell = |a: &Backend| {
+                a.variant().is_none() && (a.method(), a.algebra()) == (b.method(), b.algebra())
+            };
+            assert!(b.variant().is_some() || !Backend::ALL[..i].iter().any(same_cell), "{b:?}");
+        }
     }
 
     #[test]

@@ -16,6 +16,7 @@
 //!     const ALGEBRA: Algebra = Algebra::La;
 //!     const METHOD: Method = Method::Report;
 //!     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+//!     const VARIANT: Option<&'static str> = None;
 //!
 //!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
 //!         *tri

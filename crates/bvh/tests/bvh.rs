@@ -65,6 +65,7 @@ impl<T: Real> Intersector for Mt<T> {
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::MollerTrumbore;
     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+    const VARIANT: Option<&'static str> = None;
 
     fn prepare(&self, tri: &Triangle<T>) -> Triangle<T> {
         *tri

@@ -186,6 +186,7 @@ impl Intersector for Exact {
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Watertight;
     const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: true };
+    const VARIANT: Option<&'static str> = None;
 
     fn prepare(&self, tri: &Triangle<f64>) -> ExactTriangle {
         // `is_degenerate` also reports non-finite triangles as degenerate.

@@ -23,6 +23,7 @@
 //!     const ALGEBRA: Algebra = Algebra::La;
 //!     const METHOD: Method = Method::Report;
 //!     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+//!     const VARIANT: Option<&'static str> = None;
 //!
 //!     fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
 //!         *tri
@@ -67,10 +68,11 @@
 //!   there is one and may skip the barycentrics. The default `occludes` calls `intersect`.
 //! - **f32 and f64.** Every type is generic over [`Real`], implemented for `f32` and `f64`
 //!   only, so one renderer serves both precisions of every back end.
-//! - **Kernels describe themselves.** [`Intersector::ALGEBRA`], [`Intersector::METHOD`] and
-//!   [`Intersector::GUARANTEES`] are declared by each kernel, with no defaults, so that the
-//!   registry of back ends (crate `backends`), the benches and the tests read what a kernel is
-//!   from the kernel instead of keeping lists of names.
+//! - **Kernels describe themselves.** [`Intersector::ALGEBRA`], [`Intersector::METHOD`],
+//!   [`Intersector::GUARANTEES`] and [`Intersector::VARIANT`] (a cell of the method x algebra
+//!   matrix, or a labelled variant beside it) are declared by each kernel, with no defaults, so
+//!   that the registry of back ends (crate `backends`), the benches and the tests read what a
+//!   kernel is from the kernel instead of keeping lists of names.
 //! - **Plain data across the seam.** Points are `[T; 3]`: no glam or GA type leaks through,
 //!   and neither back end depends on the other's vector types.
 
@@ -136,10 +138,24 @@ pub enum Method {
     /// Edge functions decided as the signs of the ray's signed volumes with the edges (in a
     /// frame of the ray), exactly antisymmetric, with a tie rule for exact zeros: no cracks.
     Watertight,
+    /// Plücker coordinates: the ray and the edges as lines, each edge test the side of the
+    /// ray's line against the edge's line (their permuted inner product), edge lines
+    /// precomputed per triangle.
+    Plucker,
 }
 
 impl Method {
-    /// The short name used in tables: `"report"`, `"mt"`, `"frame"` or `"watertight"`.
+    /// Every method, in the order of the rows of the method x algebra tables.
+    pub const ALL: [Method; 5] = [
+        Method::Report,
+        Method::MollerTrumbore,
+        Method::Frame,
+        Method::Watertight,
+        Method::Plucker,
+    ];
+
+    /// The short name used in tables: `"report"`, `"mt"`, `"frame"`, `"watertight"` or
+    /// `"plucker"`.
     #[must_use]
     pub const fn name(self) -> &'static str {
         match self {
@@ -147,6 +163,7 @@ impl Method {
             Method::MollerTrumbore => "mt",
             Method::Frame => "frame",
             Method::Watertight => "watertight",
+            Method::Plucker => "plucker",
         }
     }
 }
@@ -401,6 +418,11 @@ pub trait Intersector: Sync + Send {
     const METHOD: Method;
     /// What the kernel promises beyond the trait's contract.
     const GUARANTEES: Guarantees;
+    /// `None` for a cell of the method x algebra matrix: the method written in the algebra's
+    /// own types, with no hand intrinsics and no per-test code on raw arrays. `Some(what)` for
+    /// a labelled variant beside its cell (the same method and algebra), `what` saying how it
+    /// departs from that rule, e.g. `"hand four-lane SIMD over arrays"`.
+    const VARIANT: Option<&'static str>;
 
     /// Precomputes what the kernel needs of one triangle.
     fn prepare(&self, tri: &Triangle<Self::Real>) -> Self::Prim;

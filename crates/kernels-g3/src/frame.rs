@@ -119,8 +119,10 @@ use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Triangle, Triangl
 use crate::real::private::Float;
 use crate::{GaReal, is_degenerate};
 
-/// The report's mathematics with per-triangle precomputation (`NAME = "ga"`): the fast GA
-/// kernel.
+/// The report's mathematics with per-triangle precomputation (`NAME = "ga"`), written as hand
+/// four-lane SIMD over the triangle's rows: a labelled variant
+/// ([`VARIANT`](Intersector::VARIANT)) beside the frame/G3 cell, not the cell itself, since
+/// its per-test code touches no GA type (GA appears only in `prepare`).
 ///
 /// See the [module derivation](self) and the [crate table](crate#the-kernels).
 ///
@@ -228,6 +230,7 @@ impl<T: GaReal> Intersector for G3Frame<T> {
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Frame;
     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+    const VARIANT: Option<&'static str> = Some("hand four-lane SIMD over arrays");
 
     fn prepare(&self, tri: &Triangle<T>) -> G3FramePrim<T> {
         G3FramePrim::new(tri)

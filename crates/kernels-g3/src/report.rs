@@ -106,6 +106,7 @@ impl<T: GaReal> Intersector for G3Report<T> {
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Report;
     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+    const VARIANT: Option<&'static str> = None;
 
     fn prepare(&self, tri: &Triangle<T>) -> G3ReportPrim<T> {
         let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };

@@ -134,6 +134,9 @@ use crate::{GaReal, is_degenerate};
 /// The watertight GA kernel (`NAME = "ga-plucker"`): edge tests are the trivectors
 /// `((vi - o) ∧ (vj - o)) ∧ u`, exactly antisymmetric and exactly signed.
 ///
+/// Its per-test code is hand four-lane SIMD over the triangle's rows, so it is a labelled
+/// variant ([`VARIANT`](Intersector::VARIANT)) beside the watertight/G3 cell, not the cell.
+///
 /// See the [module derivation](self) and the [crate table](crate#the-kernels).
 ///
 /// ```
@@ -192,6 +195,7 @@ impl<T: GaReal> Intersector for G3Watertight<T> {
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Watertight;
     const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: false };
+    const VARIANT: Option<&'static str> = Some("hand four-lane SIMD over arrays");
 
     fn prepare(&self, tri: &Triangle<T>) -> G3WatertightPrim<T> {
         let [a, b, c] = if is_degenerate(tri) { [tri.a; 3] } else { tri.vertices() };

@@ -99,6 +99,7 @@ impl<T: GlamReal> Intersector for MollerTrumbore<T> {
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::MollerTrumbore;
     const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+    const VARIANT: Option<&'static str> = None;
 
     fn prepare(&self, tri: &Triangle<T>) -> MtPrim<T> {
         let a = T::load(tri.a);

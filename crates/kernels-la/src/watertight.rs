@@ -149,6 +149,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Watertight;
     const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: false };
+    const VARIANT: Option<&'static str> = None;
 
     fn prepare(&self, tri: &Triangle<T>) -> WatertightPrim<T> {
         // A degenerate triangle becomes three copies of `a`: every edge function is then

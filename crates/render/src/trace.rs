@@ -184,6 +184,7 @@ mod tests {
         const ALGEBRA: Algebra = Algebra::La;
         const METHOD: Method = Method::MollerTrumbore;
         const GUARANTEES: Guarantees = Guarantees { watertight: false, exact: false };
+        const VARIANT: Option<&'static str> = None;
 
         fn prepare(&self, tri: &Triangle<f64>) -> Triangle<f64> {
             *tri
