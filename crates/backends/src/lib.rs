@@ -142,6 +142,8 @@ registry! {
     LaWatertight => kernels_la::Watertight,
     /// glam, Moller-Trumbore kernel.
     LaMt => kernels_la::MollerTrumbore,
+    /// glam, the report's method step by step (plane, line-plane intersection, edge tests).
+    LaReport => kernels_la::Report,
     /// geometric algebra, the report's method with the per-triangle part precomputed.
     G3Frame => kernels_g3::G3Frame,
     /// geometric algebra, the report's method step by step, as written.

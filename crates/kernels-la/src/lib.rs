@@ -44,6 +44,10 @@
 //! | Division | only when the edge and distance tests pass | one reciprocal per non-parallel test |
 //! | Rare slow path | exact-sign recomputation when an edge function is exactly 0 (`f64` arithmetic for `f32`, fused multiply-adds for `f64`) | none |
 //!
+//! [`Report`] (`"la-report"`) is the report's method step by step (plane, line-plane
+//! intersection, cross-product edge tests, everything per ray), the glam twin of
+//! `ga-report`: not watertight, closed edges, 3 vertices per triangle; see [`report`].
+//!
 //! Measured by `tests/watertight.rs` (random height fields with `f32` vertices; 12,676 rays
 //! aimed exactly at points of shared edges and at shared vertices, per placement): the
 //! watertight kernel lets no ray through and hits exactly one triangle with every ray (each
@@ -68,9 +72,11 @@
 
 mod lanes;
 pub mod moller_trumbore;
+pub mod report;
 pub mod watertight;
 
 pub use moller_trumbore::{MollerTrumbore, MtPrim};
+pub use report::{Report, ReportPrim};
 pub use watertight::{Watertight, WatertightPrim, WatertightRay};
 
 /// A precision the glam back end supports: `f32` (computed with [`glam::Vec3A`]) and `f64`
