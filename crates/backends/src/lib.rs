@@ -150,6 +150,8 @@ registry! {
     G3Report => kernels_g3::G3Report,
     /// geometric algebra, watertight: which side of each edge the ray passes, as a trivector.
     G3Watertight => kernels_g3::G3Watertight,
+    /// geometric algebra, Moller-Trumbore with its determinants as trivectors.
+    G3Mt => kernels_g3::G3Mt,
 }
 
 impl Backend {

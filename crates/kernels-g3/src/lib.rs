@@ -79,11 +79,13 @@
 
 pub mod frame;
 mod lanes;
+pub mod mt;
 mod real;
 pub mod report;
 pub mod watertight;
 
 pub use frame::{G3Frame, G3FramePrim};
+pub use mt::{G3Mt, G3MtPrim};
 pub use real::GaReal;
 pub use report::{G3Report, G3ReportPrim};
 pub use watertight::{G3Watertight, G3WatertightPrim, G3WatertightRay};

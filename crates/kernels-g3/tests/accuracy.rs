@@ -33,9 +33,17 @@ fn uv_tolerance<I: Intersector>() -> f64 {
     }
 }
 
+/// Largest relative error of `t` (same conditioning): [`tolerance`], but twice that for
+/// Moller-Trumbore in `f32`, whose `t` is a ratio of triple products of the edges and `o - a`
+/// (1.2e-5 measured here; `la-mt` gives the same `t` on the rays of `backends/tests/rows.rs`).
+fn t_tolerance<I: Intersector>() -> f64 {
+    let mt = I::METHOD == intersect::Method::MollerTrumbore && is_f32::<I::Real>();
+    tolerance::<I::Real>() * if mt { 2.0 } else { 1.0 }
+}
+
 fn agrees_with_reference<I: Intersector + Default>() {
     let name = label::<I>();
-    let tol = tolerance::<I::Real>();
+    let tol = t_tolerance::<I>();
     let worst = deviation::<I>(40_000);
     eprintln!(
         "{name}: {} hits; {} disagreements, all within {:.1e} of an edge; max relative t error \
@@ -86,7 +94,7 @@ fn accurate_far_from_the_origin<I: Intersector + Default>() {
     let k = I::default();
     let mut rng = rng(0x6a_1003);
     let shift = 1e3 * 2.0;
-    let tol = tolerance::<I::Real>() * if I::NAME == "ga-report" { 1e3 } else { 1.0 };
+    let tol = t_tolerance::<I>() * if I::NAME == "ga-report" { 1e3 } else { 1.0 };
     let (mut hits, mut worst) = (0, 0.0f64);
     for _ in 0..10_000 {
         let t0 = triangle(&mut rng);
@@ -117,6 +125,8 @@ macro_rules! for_each_kernel {
         $check::<kernels_g3::G3Frame<f64>>();
         $check::<kernels_g3::G3Watertight<f32>>();
         $check::<kernels_g3::G3Watertight<f64>>();
+        $check::<kernels_g3::G3Mt<f32>>();
+        $check::<kernels_g3::G3Mt<f64>>();
     };
 }
 

@@ -1,5 +1,5 @@
-//! Every conformance check of the seam (`intersect::conformance`) on the three kernels in
-//! both precisions: `ga-plucker` claims watertightness, `ga` and `ga-report` do not.
+//! Every conformance check of the seam (`intersect::conformance`) on every kernel in both
+//! precisions, each held to the guarantees it declares (asserted first).
 
 use intersect::conformance::check_all;
 use intersect::{Guarantees, Intersector};
@@ -65,4 +65,21 @@ fn ga_plucker_f64_conforms() {
         "declared guarantees"
     );
     check_all::<kernels_g3::G3Watertight<f64>>();
+}
+
+/// `check_all` in both precisions, after asserting the declared guarantees.
+fn conforms<F32, F64>(guarantees: Guarantees)
+where
+    F32: Intersector + Default,
+    F64: Intersector + Default,
+{
+    assert_eq!(F32::GUARANTEES, guarantees, "declared guarantees");
+    assert_eq!(F64::GUARANTEES, guarantees, "declared guarantees");
+    check_all::<F32>();
+    check_all::<F64>();
+}
+
+#[test]
+fn g3_mt_conforms() {
+    conforms::<kernels_g3::G3Mt<f32>, kernels_g3::G3Mt<f64>>(NOT_WATERTIGHT);
 }
