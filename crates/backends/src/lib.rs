@@ -152,6 +152,8 @@ registry! {
     G3Watertight => kernels_g3::G3Watertight,
     /// geometric algebra, Moller-Trumbore with its determinants as trivectors.
     G3Mt => kernels_g3::G3Mt,
+    /// geometric algebra, the frame method (as `ga`) written in plain GA types.
+    G3FrameCell => kernels_g3::G3FrameCell,
 }
 
 impl Backend {

@@ -258,20 +258,31 @@ impl<T: GaReal> Intersector for G3Frame<T> {
 
 #[inline(always)]
 fn intersect<T: Float>(prim: &G3FramePrim<T>, ray: &Ray<T>, t_max: T) -> Option<TriangleHit<T>> {
-    let c = candidate(prim, ray, t_max)?;
-    let inv_den = T::ONE / c.den;
-    let t = c.num * inv_den;
-    hit_distance_ok(t, t_max).then(|| TriangleHit { t, u: c.u * inv_den, v: c.v * inv_den })
+    hit(candidate(prim, ray, t_max)?, t_max)
 }
 
 /// The same test and the same rounded `t` as [`intersect`], without the barycentrics.
 #[inline(always)]
 fn occludes<T: Float>(prim: &G3FramePrim<T>, ray: &Ray<T>, t_max: T) -> bool {
-    candidate(prim, ray, t_max).is_some_and(|c| hit_distance_ok(c.num * (T::ONE / c.den), t_max))
+    candidate(prim, ray, t_max).is_some_and(|c| occluded(&c, t_max))
+}
+
+/// The hit of a [`Candidate`]: one division, then `0 < t <= t_max` on the divided `t`.
+#[inline(always)]
+pub(crate) fn hit<T: Float>(c: Candidate<T>, t_max: T) -> Option<TriangleHit<T>> {
+    let inv_den = T::ONE / c.den;
+    let t = c.num * inv_den;
+    hit_distance_ok(t, t_max).then(|| TriangleHit { t, u: c.u * inv_den, v: c.v * inv_den })
+}
+
+/// Whether [`hit`] finds the hit, without the barycentrics (the same rounded `t`).
+#[inline(always)]
+pub(crate) fn occluded<T: Float>(c: &Candidate<T>, t_max: T) -> bool {
+    hit_distance_ok(c.num * (T::ONE / c.den), t_max)
 }
 
 /// The undivided hit: `t = num / den`, `u = U / den`, `v = V / den`.
-struct Candidate<T> {
+pub(crate) struct Candidate<T> {
     num: T,
     den: T,
     u: T,
@@ -282,7 +293,14 @@ struct Candidate<T> {
 #[inline(always)]
 fn candidate<T: Float>(prim: &G3FramePrim<T>, ray: &Ray<T>, t_max: T) -> Option<Candidate<T>> {
     // s = a - o; num = s · n, den = u · n; U = num (u · m_b) - den (s · m_b), V likewise.
-    let [num, den, u, v] = T::frame_products(&prim.axes, &ray.origin, &ray.dir);
+    decide(T::frame_products(&prim.axes, &ray.origin, &ray.dir), t_max)
+}
+
+/// The frame method's decisions on its undivided values `[num, den, U, V]`, in its order: the
+/// edges as one branch, then the distance (see the module documentation). Shared by the
+/// frame/G3 cell ([`crate::G3FrameCell`]), which computes the four values in GA types.
+#[inline(always)]
+pub(crate) fn decide<T: Float>([num, den, u, v]: [T; 4], t_max: T) -> Option<Candidate<T>> {
     let abs_den = den.abs();
 
     // The edges: σU >= 0, σV >= 0 and σ(U + V) <= |den| as one branch (see the module

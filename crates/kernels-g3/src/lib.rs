@@ -78,6 +78,7 @@
 #![deny(missing_docs)]
 
 pub mod frame;
+pub mod frame_cell;
 mod lanes;
 pub mod mt;
 mod real;
@@ -85,6 +86,7 @@ pub mod report;
 pub mod watertight;
 
 pub use frame::{G3Frame, G3FramePrim};
+pub use frame_cell::{G3FrameCell, G3FrameCellPrim};
 pub use mt::{G3Mt, G3MtPrim};
 pub use real::GaReal;
 pub use report::{G3Report, G3ReportPrim};

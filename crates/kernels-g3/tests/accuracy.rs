@@ -127,6 +127,8 @@ macro_rules! for_each_kernel {
         $check::<kernels_g3::G3Watertight<f64>>();
         $check::<kernels_g3::G3Mt<f32>>();
         $check::<kernels_g3::G3Mt<f64>>();
+        $check::<kernels_g3::G3FrameCell<f32>>();
+        $check::<kernels_g3::G3FrameCell<f64>>();
     };
 }
 

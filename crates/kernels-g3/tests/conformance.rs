@@ -83,3 +83,8 @@ where
 fn g3_mt_conforms() {
     conforms::<kernels_g3::G3Mt<f32>, kernels_g3::G3Mt<f64>>(NOT_WATERTIGHT);
 }
+
+#[test]
+fn g3_frame_conforms() {
+    conforms::<kernels_g3::G3FrameCell<f32>, kernels_g3::G3FrameCell<f64>>(NOT_WATERTIGHT);
+}
