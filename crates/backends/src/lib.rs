@@ -144,6 +144,8 @@ registry! {
     LaMt => kernels_la::MollerTrumbore,
     /// glam, the report's method step by step (plane, line-plane intersection, edge tests).
     LaReport => kernels_la::Report,
+    /// glam, the frame method: precomputed unit normal and reciprocal frame (as `ga`).
+    LaFrame => kernels_la::Frame,
     /// geometric algebra, the report's method with the per-triangle part precomputed.
     G3Frame => kernels_g3::G3Frame,
     /// geometric algebra, the report's method step by step, as written.

@@ -47,6 +47,9 @@
 //! [`Report`] (`"la-report"`) is the report's method step by step (plane, line-plane
 //! intersection, cross-product edge tests, everything per ray), the glam twin of
 //! `ga-report`: not watertight, closed edges, 3 vertices per triangle; see [`report`].
+//! [`Frame`] (`"la-frame"`) is the frame method (precomputed unit normal and reciprocal frame,
+//! one dot product per edge), the glam twin of `g3-frame` and `ga`: not watertight, closed
+//! edges; see [`frame`].
 //!
 //! Measured by `tests/watertight.rs` (random height fields with `f32` vertices; 12,676 rays
 //! aimed exactly at points of shared edges and at shared vertices, per placement): the
@@ -70,11 +73,13 @@
 
 #![deny(missing_docs)]
 
+pub mod frame;
 mod lanes;
 pub mod moller_trumbore;
 pub mod report;
 pub mod watertight;
 
+pub use frame::{Frame, FramePrim};
 pub use moller_trumbore::{MollerTrumbore, MtPrim};
 pub use report::{Report, ReportPrim};
 pub use watertight::{Watertight, WatertightPrim, WatertightRay};

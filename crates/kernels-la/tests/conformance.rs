@@ -62,3 +62,11 @@ fn report_conforms_in_both_precisions() {
     check_all::<kernels_la::Report<f32>>();
     check_all::<kernels_la::Report<f64>>();
 }
+
+#[test]
+fn frame_conforms_in_both_precisions() {
+    assert_eq!(<kernels_la::Frame<f32> as Intersector>::GUARANTEES, MOLLER_TRUMBORE);
+    assert_eq!(<kernels_la::Frame<f64> as Intersector>::GUARANTEES, MOLLER_TRUMBORE);
+    check_all::<kernels_la::Frame<f32>>();
+    check_all::<kernels_la::Frame<f64>>();
+}
