@@ -156,6 +156,8 @@ registry! {
     G3Mt => kernels_g3::G3Mt,
     /// geometric algebra, the frame method (as `ga`) written in plain GA types.
     G3FrameCell => kernels_g3::G3FrameCell,
+    /// geometric algebra, watertight edge trivectors (as `ga-plucker`) in plain GA types.
+    G3WatertightCell => kernels_g3::G3WatertightCell,
 }
 
 impl Backend {
@@ -379,9 +381,15 @@ mod tests {
         assert_eq!(Backend::LaWatertight.variant(), None);
         assert_eq!(Backend::cell(Method::Watertight, Algebra::La), Some(Backend::LaWatertight));
         assert_eq!(Backend::cell(Method::Report, Algebra::G3), Some(Backend::G3Report));
+        assert_eq!(Backend::cell(Method::Frame, Algebra::G3), Some(Backend::G3FrameCell));
+        let watertight = Backend::cell(Method::Watertight, Algebra::G3);
+        assert_eq!(watertight, Some(Backend::G3WatertightCell));
         assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
         for (i, b) in Backend::ALL.into_iter().enumerate() {
             assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");
+            // A variant stands beside its cell, never alone.
+            let cell = Backend::cell(b.method(), b.algebra());
+            assert!(cell.is_some_and(|c| c.variant().is_none()), "{b:?} has no cell");
             let same_cell = |a: &Backend| {
                 a.variant().is_none() && (a.method(), a.algebra()) == (b.method(), b.algebra())
             };

@@ -84,6 +84,7 @@ pub mod mt;
 mod real;
 pub mod report;
 pub mod watertight;
+pub mod watertight_cell;
 
 pub use frame::{G3Frame, G3FramePrim};
 pub use frame_cell::{G3FrameCell, G3FrameCellPrim};
@@ -91,6 +92,7 @@ pub use mt::{G3Mt, G3MtPrim};
 pub use real::GaReal;
 pub use report::{G3Report, G3ReportPrim};
 pub use watertight::{G3Watertight, G3WatertightPrim, G3WatertightRay};
+pub use watertight_cell::{G3WatertightCell, G3WatertightCellPrim};
 
 /// Re-exported from the seam, where every back end finds it: whether a triangle has zero
 /// area (its bivector `(b - a) ∧ (c - a)` is exactly zero), decided exactly.

@@ -183,8 +183,8 @@ pub struct G3WatertightPrim<T> {
 /// it give the edge trivectors with their signs).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct G3WatertightRay<T> {
-    ex: Vector<T>,
-    ey: Vector<T>,
+    pub(crate) ex: Vector<T>,
+    pub(crate) ey: Vector<T>,
 }
 
 impl<T: GaReal> Intersector for G3Watertight<T> {
@@ -228,7 +228,7 @@ impl<T: GaReal> Intersector for G3Watertight<T> {
 /// `ex ∧ ey = û I`, so `ex ∧ ey ∧ û = I`. No branch, and no cancellation: `|σ + û₃| >= 1`.
 /// A zero or non-finite direction gives non-finite vectors, and every test then misses.
 #[inline]
-fn prepare_ray<T: Float>(ray: &Ray<T>) -> G3WatertightRay<T> {
+pub(crate) fn prepare_ray<T: Float>(ray: &Ray<T>) -> G3WatertightRay<T> {
     let dir = Vector::from_array(ray.dir);
     let n = dir * dir.norm().recip();
     let sigma = T::ONE.copy_sign(n.e3);
@@ -251,6 +251,25 @@ fn intersect<T: Float>(
     // the edge trivectors as their dual scalars: w_a is the edge opposite a, and so on.
     let [x, y, w] =
         T::edge_trivectors(&prim.axes, &ray.origin, &rd.ex.to_array(), &rd.ey.to_array());
+    let w = decide_edges([w[0], w[1], w[2]], || [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]]])?;
+
+    // t = (sa · n) / (u · n), tested before dividing (see `G3Frame`).
+    // Lane 3 of the rows is the normal, lane 0 the vertex a.
+    let n = lanes::lane(&prim.axes, 3);
+    let num = dot(lanes::lane(&prim.axes, 0) - Vector::from_array(ray.origin), n);
+    let den = dot(Vector::from_array(ray.dir), n);
+    finish(w, num, den, t_max)
+}
+
+/// The edge decisions of the method, in its order, on the three edge values `w` (`w[j]` the
+/// edge opposite vertex `j`), with `points` the vertices' coordinates in the plane orthogonal
+/// to the ray for the exact fallback: the values to divide by, or `None` (outside). Shared
+/// by the watertight/G3 cell ([`crate::G3WatertightCell`]).
+#[inline(always)]
+pub(crate) fn decide_edges<T: Float>(
+    w: [T; 3],
+    points: impl FnOnce() -> [[T; 2]; 3],
+) -> Option<[T; 3]> {
     // An exact zero may hide either sign (and NaN has none): those are decided exactly, with
     // the tie rule for exact zeros, and `inside_exact` also makes the inside test.
     let decided = |x: T| x.abs() > T::ZERO;
@@ -265,22 +284,27 @@ fn intersect<T: Float>(
     if ((w[1] * sign < T::ZERO) | (w[2] * sign < T::ZERO)) & decided(w[0]) {
         return None;
     }
-    let [w_a, w_b, w_c] = if decided(w[0]) & decided(w[1]) & decided(w[2]) {
+    if decided(w[0]) & decided(w[1]) & decided(w[2]) {
         // Inside (both faces): three non-zero values of one sign.
-        [w[0], w[1], w[2]]
+        Some(w)
     } else {
-        inside_exact([[x[0], y[0]], [x[1], y[1]], [x[2], y[2]]])?
-    };
+        inside_exact(points())
+    }
+}
+
+/// The rest of the method after the edges: `det`, the distance `t = num / den` tested before
+/// dividing, then the barycentrics `w_b / det`, `w_c / det`.
+#[inline(always)]
+pub(crate) fn finish<T: Float>(
+    [w_a, w_b, w_c]: [T; 3],
+    num: T,
+    den: T,
+    t_max: T,
+) -> Option<TriangleHit<T>> {
     let det = w_a + w_b + w_c;
     if det == T::ZERO {
         return None;
     }
-
-    // t = (sa · n) / (u · n), tested before dividing (see `G3Frame`).
-    // Lane 3 of the rows is the normal, lane 0 the vertex a.
-    let n = lanes::lane(&prim.axes, 3);
-    let num = dot(lanes::lane(&prim.axes, 0) - Vector::from_array(ray.origin), n);
-    let den = dot(Vector::from_array(ray.dir), n);
     let num_s = num * T::ONE.copy_sign(den);
     let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
     if !(num_s > T::ZERO && num_s <= t_max * den.abs() * slack) {
@@ -319,7 +343,7 @@ fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
 /// ray is outside, or for non-finite input, where no sign is meaningful.
 #[cold]
 #[inline(never)]
-fn inside_exact<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
+pub(crate) fn inside_exact<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
     if !p.iter().flatten().all(|x| x.is_finite()) {
         return None;
     }
@@ -350,7 +374,7 @@ fn inside_exact<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
 
 /// `N* / |N|` for `N = (b - a) ∧ (c - a)`, computed in `f64` and rounded once; zero for a
 /// degenerate triangle.
-fn unit_normal<T: GaReal>(tri: &Triangle<T>) -> Vector<T> {
+pub(crate) fn unit_normal<T: GaReal>(tri: &Triangle<T>) -> Vector<T> {
     if is_degenerate(tri) {
         return Vector::ZERO;
     }

@@ -18,7 +18,7 @@ use intersect::{Intersector, Ray, Real, Triangle};
 fn edge_band<I: Intersector>() -> f64 {
     match (I::NAME, is_f32::<I::Real>()) {
         ("ga-report", true) => 2e-4,
-        ("ga-plucker", true) => 1e-4,
+        ("ga-plucker" | "g3-watertight", true) => 1e-4,
         (_, true) => 2e-5,
         (_, false) => 1e-13,
     }
@@ -129,6 +129,8 @@ macro_rules! for_each_kernel {
         $check::<kernels_g3::G3Mt<f64>>();
         $check::<kernels_g3::G3FrameCell<f32>>();
         $check::<kernels_g3::G3FrameCell<f64>>();
+        $check::<kernels_g3::G3WatertightCell<f32>>();
+        $check::<kernels_g3::G3WatertightCell<f64>>();
     };
 }
 

@@ -88,3 +88,8 @@ fn g3_mt_conforms() {
 fn g3_frame_conforms() {
     conforms::<kernels_g3::G3FrameCell<f32>, kernels_g3::G3FrameCell<f64>>(NOT_WATERTIGHT);
 }
+
+#[test]
+fn g3_watertight_conforms() {
+    conforms::<kernels_g3::G3WatertightCell<f32>, kernels_g3::G3WatertightCell<f64>>(PLUCKER);
+}

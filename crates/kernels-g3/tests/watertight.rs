@@ -42,6 +42,12 @@ fn ga_plucker_has_no_cracks() {
     assert_eq!(report::<kernels_g3::G3Watertight<f64>>(), [[0, 0]; 2]);
 }
 
+#[test]
+fn g3_watertight_has_no_cracks() {
+    assert_eq!(report::<kernels_g3::G3WatertightCell<f32>>(), [[0, 0]; 2]);
+    assert_eq!(report::<kernels_g3::G3WatertightCell<f64>>(), [[0, 0]; 2]);
+}
+
 /// Built without FMA, `ga` rounds differently: its cracks are all at edges, and in `f64` far
 /// from the origin it leaves none on these rays.
 #[test]
