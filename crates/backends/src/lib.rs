@@ -146,6 +146,8 @@ registry! {
     LaReport => kernels_la::Report,
     /// glam, the frame method: precomputed unit normal and reciprocal frame (as `ga`).
     LaFrame => kernels_la::Frame,
+    /// glam, Plücker coordinates: the ray's line against the edges' lines (six-vector form).
+    LaPlucker => kernels_la::Plucker,
     /// geometric algebra, the report's method with the per-triangle part precomputed.
     G3Frame => kernels_g3::G3Frame,
     /// geometric algebra, the report's method step by step, as written.
@@ -158,6 +160,8 @@ registry! {
     G3FrameCell => kernels_g3::G3FrameCell,
     /// geometric algebra, watertight edge trivectors (as `ga-plucker`) in plain GA types.
     G3WatertightCell => kernels_g3::G3WatertightCell,
+    /// geometric algebra, Plücker lines as direction vectors and moment bivectors.
+    G3Plucker => kernels_g3::G3Plucker,
 }
 
 impl Backend {

@@ -131,6 +131,8 @@ macro_rules! for_each_kernel {
         $check::<kernels_g3::G3FrameCell<f64>>();
         $check::<kernels_g3::G3WatertightCell<f32>>();
         $check::<kernels_g3::G3WatertightCell<f64>>();
+        $check::<kernels_g3::G3Plucker<f32>>();
+        $check::<kernels_g3::G3Plucker<f64>>();
     };
 }
 

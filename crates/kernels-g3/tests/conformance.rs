@@ -93,3 +93,8 @@ fn g3_frame_conforms() {
 fn g3_watertight_conforms() {
     conforms::<kernels_g3::G3WatertightCell<f32>, kernels_g3::G3WatertightCell<f64>>(PLUCKER);
 }
+
+#[test]
+fn g3_plucker_conforms() {
+    conforms::<kernels_g3::G3Plucker<f32>, kernels_g3::G3Plucker<f64>>(NOT_WATERTIGHT);
+}

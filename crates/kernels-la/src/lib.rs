@@ -50,6 +50,9 @@
 //! [`Frame`] (`"la-frame"`) is the frame method (precomputed unit normal and reciprocal frame,
 //! one dot product per edge), the glam twin of `g3-frame` and `ga`: not watertight, closed
 //! edges; see [`frame`].
+//! [`Plucker`] (`"la-plucker"`) tests the ray's line against the edges' lines in Plücker
+//! coordinates (the six-vector form, edge lines precomputed), the glam twin of `g3-plucker`:
+//! not watertight, closed edges; see [`plucker`].
 //!
 //! Measured by `tests/watertight.rs` (random height fields with `f32` vertices; 12,676 rays
 //! aimed exactly at points of shared edges and at shared vertices, per placement): the
@@ -76,11 +79,13 @@
 pub mod frame;
 mod lanes;
 pub mod moller_trumbore;
+pub mod plucker;
 pub mod report;
 pub mod watertight;
 
 pub use frame::{Frame, FramePrim};
 pub use moller_trumbore::{MollerTrumbore, MtPrim};
+pub use plucker::{Plucker, PluckerPrim, PluckerRay};
 pub use report::{Report, ReportPrim};
 pub use watertight::{Watertight, WatertightPrim, WatertightRay};
 

@@ -86,4 +86,6 @@ fn random_rays_agree_with_the_f64_reference() {
     random_rays_agree_with_reference::<kernels_la::Report<f64>>();
     random_rays_agree_with_reference::<kernels_la::Frame<f32>>();
     random_rays_agree_with_reference::<kernels_la::Frame<f64>>();
+    random_rays_agree_with_reference::<kernels_la::Plucker<f32>>();
+    random_rays_agree_with_reference::<kernels_la::Plucker<f64>>();
 }

@@ -70,3 +70,11 @@ fn frame_conforms_in_both_precisions() {
     check_all::<kernels_la::Frame<f32>>();
     check_all::<kernels_la::Frame<f64>>();
 }
+
+#[test]
+fn plucker_conforms_in_both_precisions() {
+    assert_eq!(<kernels_la::Plucker<f32> as Intersector>::GUARANTEES, MOLLER_TRUMBORE);
+    assert_eq!(<kernels_la::Plucker<f64> as Intersector>::GUARANTEES, MOLLER_TRUMBORE);
+    check_all::<kernels_la::Plucker<f32>>();
+    check_all::<kernels_la::Plucker<f64>>();
+}
