@@ -69,10 +69,16 @@
 //! 1. Write the kernel in a kernel crate (`kernels-la`, `kernels-g3`, or a new one added to this
 //!    crate's dependencies): a type generic over `f32` and `f64` with a `new()` constructor,
 //!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`,
-//!    `GUARANTEES` and `VARIANT` (`None` for a cell), and its own tests (one call per precision to the conformance checks of
-//!    `intersect`).
+//!    `GUARANTEES` and `VARIANT` (`None` for a cell), and its own tests (one call per
+//!    precision to the conformance checks of `intersect`, and a call in `kernels-la`'s
+//!    `tests/agreement.rs` or `kernels-g3`'s `tests/accuracy.rs`). The kernel's module
+//!    documentation states what the [rules for a fair row](#rules-for-a-fair-row) ask: the
+//!    method and which cells it mirrors, the bytes per triangle, the operations per test and
+//!    the tie rule.
 //! 2. Add one entry to the `registry!` list in this file: a one-line description (the
-//!    variant's doc and the `--help` text), the variant, and the kernel's path.
+//!    variant's doc and the `--help` text), the variant, and the kernel's path. Every test
+//!    that loops over [`Backend::ALL`] then runs it, `tests/rows.rs` among them (each cell
+//!    against its row's LA cell).
 //! 3. Document it: a row in the README's back-end tables (a test fails until the rows match
 //!    [`Backend::ALL`]), and rerun the benches so that `results/` holds it (a test fails
 //!    until every table of `results/` has a row for it).

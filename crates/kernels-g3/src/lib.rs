@@ -31,7 +31,25 @@
 //! assert_eq!(<G3Watertight<f32> as Intersector>::NAME, "ga-plucker");
 //! ```
 //!
-//! # The kernels
+//! # The cells of the method x algebra matrix, and two variants
+//!
+//! One kernel per method in the G3 column (see the `backends` crate's "Rules for a fair
+//! row"), each written in `ga::g3` types and operators, with no hand intrinsics and no
+//! per-test code on raw arrays; each module holds its derivation, its per-triangle bytes, its
+//! operations per test and its tie rule:
+//!
+//! | method | cell | module | beside it |
+//! |---|---|---|---|
+//! | report | [`G3Report`] (`"ga-report"`) | [`report`] | |
+//! | mt | [`G3Mt`] (`"g3-mt"`) | [`mt`] | |
+//! | frame | [`G3FrameCell`] (`"g3-frame"`) | [`frame_cell`] | [`G3Frame`] (`"ga"`, variant: hand four-lane SIMD over arrays) |
+//! | watertight | [`G3WatertightCell`] (`"g3-watertight"`) | [`watertight_cell`] | [`G3Watertight`] (`"ga-plucker"`, variant: the same) |
+//! | plucker | [`G3Plucker`] (`"g3-plucker"`) | [`plucker`] | |
+//!
+//! The variants share their cell's per-triangle numbers and decisions (the cells call the
+//! variants' modules for them) and differ only in how the per-test values are computed.
+//!
+//! # The report's three kernels
 //!
 //! All three are generic over the precision ([`GaReal`]: `f32` or `f64`) and implement the
 //! report (T. Chauncey, *An Investigation into Geometric Algebra & its Implementation in a Ray

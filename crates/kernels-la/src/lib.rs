@@ -24,10 +24,20 @@
 //! assert_eq!(<Watertight<f32> as Intersector>::NAME, "la");
 //! ```
 //!
+//! # The cells of the method x algebra matrix
+//!
+//! One kernel per method in the LA column (see the `backends` crate's "Rules for a fair
+//! row"), each written with glam vectors (no hand intrinsics): [`Report`] (`"la-report"`),
+//! [`MollerTrumbore`] (`"la-mt"`), [`Frame`] (`"la-frame"`), [`Watertight`] (`"la"`) and
+//! [`Plucker`] (`"la-plucker"`). Each module holds its derivation, its per-triangle bytes, its
+//! operations per test and its tie rule.
+//!
 //! # What each kernel guarantees
 //!
-//! Both are generic over the precision: `f32` works on glam's [`glam::Vec3A`] (one SSE
+//! All are generic over the precision: `f32` works on glam's [`glam::Vec3A`] (one SSE
 //! register per vector), `f64` on [`glam::DVec3`] (see [`GlamReal`]).
+//!
+//! The two kernels that came first, in detail:
 //!
 //! | | [`Watertight`] (`"la"`, default) | [`MollerTrumbore`] (`"la-mt"`) |
 //! |---|---|---|
