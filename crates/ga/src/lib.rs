@@ -89,4 +89,7 @@ pub mod g3;
 pub mod reference;
 mod scalar;
 
+/// The workspace's one float trait, which [`Scalar`] extends: re-exported so that code using
+/// `ga` can name its items by path (`<T as ga::Real>::ZERO`, `.map(ga::Real::to_f64)`).
+pub use real::Real;
 pub use scalar::Scalar;

@@ -78,9 +78,6 @@
 
 #![deny(missing_docs)]
 
-use core::fmt::{Debug, Display};
-use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
-
 #[cfg(feature = "conformance")]
 pub mod conformance;
 pub mod vec3;
@@ -179,110 +176,10 @@ pub struct Guarantees {
     pub exact: bool,
 }
 
-/// A floating-point scalar: implemented for `f32` and `f64`.
-pub trait Real:
-    Copy
-    + Default
-    + PartialEq
-    + PartialOrd
-    + Debug
-    + Display
-    + Send
-    + Sync
-    + 'static
-    + Add<Output = Self>
-    + Sub<Output = Self>
-    + Mul<Output = Self>
-    + Div<Output = Self>
-    + Neg<Output = Self>
-    + AddAssign
-    + SubAssign
-    + MulAssign
-{
-    /// 0.
-    const ZERO: Self;
-    /// 1.
-    const ONE: Self;
-    /// Positive infinity.
-    const INFINITY: Self;
-    /// Machine epsilon (distance from 1 to the next representable number).
-    const EPSILON: Self;
-    /// Number of bits in the significand, the implicit one included (24 or 53).
-    const MANTISSA_DIGITS: u32;
-    /// Converts from `f64`, rounding to nearest.
-    fn from_f64(x: f64) -> Self;
-    /// Converts to `f64` (exact).
-    fn to_f64(self) -> f64;
-    /// Absolute value.
-    #[must_use]
-    fn abs(self) -> Self;
-    /// Square root.
-    #[must_use]
-    fn sqrt(self) -> Self;
-    /// The smaller of two values (the other one if one is NaN).
-    #[must_use]
-    fn min(self, other: Self) -> Self;
-    /// The larger of two values (the other one if one is NaN).
-    #[must_use]
-    fn max(self, other: Self) -> Self;
-    /// Fused multiply-add `self * a + b` with one rounding.
-    #[must_use]
-    fn mul_add(self, a: Self, b: Self) -> Self;
-    /// Whether the value is neither infinite nor NaN.
-    fn is_finite(self) -> bool;
-    /// Whether the value is NaN.
-    fn is_nan(self) -> bool;
-}
-
-macro_rules! impl_real {
-    ($t:ident) => {
-        impl Real for $t {
-            const ZERO: Self = 0.0;
-            const ONE: Self = 1.0;
-            const INFINITY: Self = $t::INFINITY;
-            const EPSILON: Self = $t::EPSILON;
-            const MANTISSA_DIGITS: u32 = $t::MANTISSA_DIGITS;
-            #[inline(always)]
-            fn from_f64(x: f64) -> Self {
-                x as $t
-            }
-            #[inline(always)]
-            fn to_f64(self) -> f64 {
-                self as f64
-            }
-            #[inline(always)]
-            fn abs(self) -> Self {
-                $t::abs(self)
-            }
-            #[inline(always)]
-            fn sqrt(self) -> Self {
-                $t::sqrt(self)
-            }
-            #[inline(always)]
-            fn min(self, other: Self) -> Self {
-                $t::min(self, other)
-            }
-            #[inline(always)]
-            fn max(self, other: Self) -> Self {
-                $t::max(self, other)
-            }
-            #[inline(always)]
-            fn mul_add(self, a: Self, b: Self) -> Self {
-                $t::mul_add(self, a, b)
-            }
-            #[inline(always)]
-            fn is_finite(self) -> bool {
-                $t::is_finite(self)
-            }
-            #[inline(always)]
-            fn is_nan(self) -> bool {
-                $t::is_nan(self)
-            }
-        }
-    };
-}
-impl_real!(f32);
-impl_real!(f64);
+/// The scalar of the seam: the workspace's one float trait, implemented for `f32` and `f64`
+/// only, re-exported so that back ends and the renderer name it from here. Its `mul_add` is
+/// always fused (see the `real` crate).
+pub use real::Real;
 
 /// A ray: `origin + t * dir` for `t > 0`. `dir` need not be normalised; `t` is measured in
 /// units of `dir`.

@@ -213,13 +213,13 @@ impl<T: GaReal> G3FramePrim<T> {
         let m_b = inverse | (a64 - c64);
         // Edge a -> b: (b - a) ∧ (p - a) = λc N, so λc = (p - a) · (N⁻¹ | (b - a)).
         let m_c = inverse | (b64 - a64);
-        let round = |v: Vector<f64>| Vector::from_array(v.to_array().map(ga::Scalar::from_f64));
+        let round = |v: Vector<f64>| Vector::from_array(v.to_array().map(ga::Real::from_f64));
         Self::from_vectors(a, round(n), round(m_b), round(m_c))
     }
 }
 
 fn to_f64<T: GaReal>(x: T) -> f64 {
-    ga::Scalar::to_f64(x)
+    ga::Real::to_f64(x)
 }
 
 impl<T: GaReal> Intersector for G3Frame<T> {

@@ -29,9 +29,10 @@ use ga::g3::Vector;
 pub fn frame_products<T: Scalar>(axes: &[[T; 4]; 3], origin: &[T; 3], dir: &[T; 3]) -> [T; 4] {
     let [x, y, z] = axes;
     let s = [x[3] - origin[0], y[3] - origin[1], z[3] - origin[2]];
-    let inner = |v: &[T; 3], j: usize| v[2].mul_add(z[j], v[1].mul_add(y[j], v[0] * x[j]));
+    let mad = T::mul_add_if_fma;
+    let inner = |v: &[T; 3], j: usize| mad(v[2], z[j], mad(v[1], y[j], v[0] * x[j]));
     let (num, den) = (inner(&s, 0), inner(dir, 0));
-    let edge = |j| num.mul_add(inner(dir, j), -(den * inner(&s, j)));
+    let edge = |j| mad(num, inner(dir, j), -(den * inner(&s, j)));
     [num, den, edge(1), edge(2)]
 }
 
@@ -56,7 +57,7 @@ pub fn edge_trivectors<T: Scalar>(
     let coords = |e: &[T; 3]| -> [T; 4] {
         core::array::from_fn(|j| {
             let s: [T; 3] = core::array::from_fn(|k| axes[k][j] - origin[k]);
-            s[2].mul_add(e[2], s[1].mul_add(e[1], s[0] * e[0]))
+            s[2].mul_add_if_fma(e[2], s[1].mul_add_if_fma(e[1], s[0] * e[0]))
         })
     };
     let (x, y) = (coords(ex), coords(ey));

@@ -334,7 +334,7 @@ fn edge_value<T: Float>(p: [T; 2], q: [T; 2]) -> T {
 /// The inner product `x | y` of two vectors, with fused multiply-adds.
 #[inline(always)]
 fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
-    x.e1.mul_add(y.e1, x.e2.mul_add(y.e2, x.e3 * y.e3))
+    x.e1.mul_add_if_fma(y.e1, x.e2.mul_add_if_fma(y.e2, x.e3 * y.e3))
 }
 
 /// The three edge values with exact signs (Shewchuk's `orient2d` of the two points and the
@@ -378,9 +378,9 @@ pub(crate) fn unit_normal<T: GaReal>(tri: &Triangle<T>) -> Vector<T> {
     if is_degenerate(tri) {
         return Vector::ZERO;
     }
-    let [a, b, c] = tri.vertices().map(|p| Vector::from_array(p.map(ga::Scalar::to_f64)));
+    let [a, b, c] = tri.vertices().map(|p| Vector::from_array(p.map(ga::Real::to_f64)));
     let n = ((b - a) ^ (c - a)).dual().normalize();
-    Vector::from_array(n.to_array().map(ga::Scalar::from_f64))
+    Vector::from_array(n.to_array().map(ga::Real::from_f64))
 }
 
 #[cfg(test)]

@@ -12,7 +12,9 @@ use core::ops::{Add, Mul, Sub};
 use glam::{DVec3, Vec3A, Vec3Swizzles};
 use intersect::Real;
 
-/// The vector operations the kernels need, for one precision.
+/// The vector operations the kernels need, for one precision: an extension of the shared
+/// float trait [`Real`] by glam's vector type, a different concern from the scalar (see
+/// [`crate::GlamReal`]).
 ///
 /// Every method is `#[inline(always)]`: the kernels are a few dozen instructions long and a
 /// call would cost as much as the arithmetic.

@@ -102,7 +102,11 @@ pub use watertight::{Watertight, WatertightPrim, WatertightRay};
 /// A precision the glam back end supports: `f32` (computed with [`glam::Vec3A`]) and `f64`
 /// (with [`glam::DVec3`]).
 ///
-/// Sealed: the vector operations behind it are private, so no other type can implement it.
+/// Every scalar operation is the workspace's one float trait, [`intersect::Real`] (its
+/// `mul_add` always fused); what this adds is glam's vector type of each precision and the
+/// operations the kernels do on it, a concern of this crate alone (no other crate computes
+/// with glam). Sealed: the vector operations behind it are private, so no other type can
+/// implement it.
 pub trait GlamReal: lanes::Lanes {}
 
 impl GlamReal for f32 {}

@@ -539,7 +539,8 @@ pub(crate) fn rotor_product_portable<T: Scalar>(a: Rotor<T>, b: Rotor<T>) -> Rot
     // lane by lane with one shape, the optimiser turns it into broadcasts, shuffles and FMAs.
     let (n12, n23, n31) = (-a.e12, -a.e23, -a.e31);
     let lane = |x: [T; 4], y: [T; 4]| {
-        x[3].mul_add(y[3], x[2].mul_add(y[2], x[1].mul_add(y[1], x[0] * y[0])))
+        let mad = T::mul_add_if_fma;
+        mad(x[3], y[3], mad(x[2], y[2], mad(x[1], y[1], x[0] * y[0])))
     };
     Rotor::new(
         lane([a.s, n12, n23, n31], [b.s, b.e12, b.e23, b.e31]),

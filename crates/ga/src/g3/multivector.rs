@@ -316,7 +316,7 @@ impl<T: Scalar> Multivector<T> {
         let a = self.to_array();
         let mut sum = T::ZERO;
         for x in a {
-            sum = x.mul_add(x, sum);
+            sum = x.mul_add_if_fma(x, sum);
         }
         sum
     }
@@ -380,7 +380,7 @@ impl<T: Scalar> Multivector<T> {
         let (c, d) = (alpha * r, -beta * r);
         let inv = Self {
             c: core::array::from_fn(|l| {
-                signed(a[l], CONJ_NEG[l]).mul_add(c, signed(a[7 - l], CROSS_NEG[l]) * d)
+                signed(a[l], CONJ_NEG[l]).mul_add_if_fma(c, signed(a[7 - l], CROSS_NEG[l]) * d)
             }),
         };
         (n > T::ZERO && n < T::INFINITY && inv.all_finite()).then_some(inv)

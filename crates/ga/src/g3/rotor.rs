@@ -256,6 +256,8 @@ mod tests {
     use super::*;
     use crate::g3::Multivector;
     use core::f64::consts::{FRAC_PI_2, PI};
+    // `abs` on a value whose float type is inferred later needs the trait that has it in scope.
+    use crate::Real as _;
 
     type V = Vector<f64>;
 

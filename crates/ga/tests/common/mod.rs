@@ -5,9 +5,9 @@
 // Each test binary uses a different subset of these helpers.
 #![allow(dead_code)]
 
-use ga::Scalar;
 use ga::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 use ga::reference::{Multivector as Reference, from_g3_report, to_g3_report};
+use ga::{Real, Scalar};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
@@ -42,7 +42,7 @@ macro_rules! embed_scalar {
                 [f64::from(self), 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
             }
             fn from_report(c: [f64; 8]) -> Self {
-                <$t as Scalar>::from_f64(c[0])
+                <$t as Real>::from_f64(c[0])
             }
         }
     };
@@ -87,7 +87,7 @@ impl<T: Scalar> Embed for Trivector<T> {
 impl<T: Scalar> Embed for Rotor<T> {
     const SLOTS: [bool; 8] = EVEN;
     fn to_report(self) -> [f64; 8] {
-        let [s, e12, e23, e31] = self.to_array().map(Scalar::to_f64);
+        let [s, e12, e23, e31] = self.to_array().map(Real::to_f64);
         [s, 0.0, 0.0, 0.0, e12, e23, e31, 0.0]
     }
     fn from_report(c: [f64; 8]) -> Self {
@@ -98,7 +98,7 @@ impl<T: Scalar> Embed for Rotor<T> {
 impl<T: Scalar> Embed for Multivector<T> {
     const SLOTS: [bool; 8] = ALL;
     fn to_report(self) -> [f64; 8] {
-        self.to_array().map(Scalar::to_f64)
+        self.to_array().map(Real::to_f64)
     }
     fn from_report(c: [f64; 8]) -> Self {
         Self::from_array(c.map(f))
