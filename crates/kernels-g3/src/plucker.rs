@@ -106,8 +106,8 @@ impl<T: GaReal> Intersector for G3Plucker<T> {
             let (e, m) = ([Vector::ZERO; 3], [Bivector::ZERO; 3]);
             return G3PluckerPrim { e, m, a, n: Vector::ZERO };
         }
-        let [a64, b64, c64] = tri.vertices().map(|p| Vector::from_array(p.map(ga::Scalar::to_f64)));
-        let round = |x: [f64; 3]| x.map(ga::Scalar::from_f64);
+        let [a64, b64, c64] = tri.vertices().map(|p| Vector::from_array(p.map(ga::Real::to_f64)));
+        let round = |x: [f64; 3]| x.map(ga::Real::from_f64);
         let edges = [(b64, c64), (c64, a64), (a64, b64)];
         G3PluckerPrim {
             e: edges.map(|(p, q)| Vector::from_array(round((q - p).to_array()))),

@@ -52,9 +52,6 @@ pub trait Lanes: Real {
     /// `< 0` and another `> 0`. One mask of the sign bits and one range check, so that the
     /// caller's test is one branch.
     fn mixed_signs(v: Self::V) -> bool;
-    /// `|self|` with the sign (bit) of `sign`.
-    #[must_use]
-    fn copy_sign(self, sign: Self) -> Self;
     /// `rotate(x) * y - rotate(y) * x`, lane by lane, with an error small enough that the sign
     /// of each lane is that of the exact value: the watertight kernel's fallback when the
     /// plain computation gives a zero. See [`crate::Watertight`].
@@ -64,10 +61,6 @@ pub trait Lanes: Real {
 impl Lanes for f32 {
     type V = Vec3A;
 
-    #[inline(always)]
-    fn copy_sign(self, sign: f32) -> f32 {
-        f32::copysign(self, sign)
-    }
     #[inline(always)]
     fn load(p: [f32; 3]) -> Vec3A {
         Vec3A::from_array(p)
@@ -122,10 +115,6 @@ impl Lanes for f32 {
 impl Lanes for f64 {
     type V = DVec3;
 
-    #[inline(always)]
-    fn copy_sign(self, sign: f64) -> f64 {
-        f64::copysign(self, sign)
-    }
     #[inline(always)]
     fn load(p: [f64; 3]) -> DVec3 {
         DVec3::from_array(p)
