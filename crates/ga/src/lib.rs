@@ -1,9 +1,10 @@
 //! Geometric algebra for the wedge ray tracers.
 //!
-//! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade and hand-expanded
-//! products; [`reference`](mod@reference) is a generic (slow, obviously correct) Clifford
-//! algebra the fast kernels are tested against; [`errata`] lists what the report this project
-//! starts from gets wrong and what the code does instead.
+//! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade; [`errata`] lists
+//! what the report this project starts from gets wrong and what the code does instead. The
+//! products are written by the `ga-codegen` crate from a table of algebras and checked against
+//! the generic (slow, obviously correct) Clifford algebra of the `ga-reference` crate, which `ga`
+//! itself does not depend on.
 //!
 //! ```
 //! use ga::g3::{Bivector, Multivector, Rotor, Vector};
@@ -86,7 +87,6 @@
 
 pub mod errata;
 pub mod g3;
-pub mod reference;
 mod scalar;
 
 pub use scalar::Scalar;

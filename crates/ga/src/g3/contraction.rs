@@ -96,7 +96,7 @@
 //! inner product. Where only a rotor's scalar or bivector part takes part the impl scales or
 //! calls the bivector kernel. The other pairs are hand-expanded kernels whose comments list
 //! the blade products they keep; `tests/oracle.rs` checks every pair against
-//! [`crate::reference`].
+//! the generic algebra of the `ga-reference` crate.
 
 use crate::Scalar;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};

@@ -5,7 +5,7 @@
 //! no zero grade is ever multiplied. The result is the smallest type holding every grade that
 //! can appear: vector times vector is a [`Rotor`] (scalar plus bivector), vector times bivector
 //! is odd (vector plus trivector) and so a [`Multivector`]. The tests in `tests/` compare every
-//! kernel against the generic bitmask algebra in [`crate::reference`].
+//! kernel against the generic bitmask algebra in the generic algebra of the `ga-reference` crate.
 //!
 //! |  ·   |  1   |  e1  |  e2  |  e3  | e12  | e23  | e31  | e123 |
 //! |------|------|------|------|------|------|------|------|------|

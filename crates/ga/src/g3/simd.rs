@@ -238,7 +238,7 @@ mod tests {
     /// storage lane 5 is `e31 = -e13`; each product is split exactly by an FMA.
     #[test]
     fn f64_kernel_is_accurate_coefficient_by_coefficient() {
-        let g3 = crate::reference::Algebra::new(3, 0, 0);
+        let g3 = ga_reference::Algebra::new(3, 0, 0);
         let flip = |l: usize| if l == 5 { -1.0 } else { 1.0 };
         let check = |a: [f64; 8], b: [f64; 8]| {
             let got = super::geometric_f64(&a, &b);

@@ -1,4 +1,4 @@
-//! Tests of the oracle itself (`ga::reference`), on Euclidean, projective, conformal and
+//! Tests of the oracle itself (the `ga-reference` crate), on Euclidean, projective, conformal and
 //! spacetime signatures.
 //!
 //! A bilinear product is the Clifford product of a metric exactly when (1) it is associative,
@@ -7,7 +7,7 @@
 //! tests therefore pin the geometric product down completely; the other products are then checked
 //! against their textbook formulas in terms of the geometric product.
 
-use ga::reference::{
+use ga_reference::{
     Algebra, G3_REPORT_BASIS, Multivector, blade_name, from_g3_report, grade_of, to_g3_report,
 };
 use rand::{Rng, SeedableRng};
