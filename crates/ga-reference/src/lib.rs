@@ -410,6 +410,14 @@ impl Multivector {
         self.filtered_product(other, |r, s, t| r != 0 && s != 0 && t == r.abs_diff(s))
     }
 
+    /// The "fat dot" product (Dorst's dot, the inner product of projective geometric algebra as
+    /// bivector.net and Klein use it): the grade `|r - s|` part of each blade product, scalars
+    /// included (so `1 . B = B`, unlike [`Multivector::inner`]).
+    #[must_use]
+    pub fn fat_dot(&self, other: &Self) -> Self {
+        self.filtered_product(other, |r, s, t| t == r.abs_diff(s))
+    }
+
     /// The scalar product `<A B>_0`.
     #[must_use]
     pub fn scalar_product(&self, other: &Self) -> f64 {

@@ -227,6 +227,23 @@ fn report_inner_product_is_the_contraction_of_the_lower_grade() {
     }
 }
 
+/// The "fat dot" is the contraction of the lower grade onto the higher, scalars included: a
+/// scalar on either side scales.
+#[test]
+fn fat_dot_is_the_contraction_of_the_lower_grade_scalars_included() {
+    let mut rng = Pcg64::seed_from_u64(16);
+    for (name, algebra) in algebras() {
+        for r in 0..=algebra.dimension() {
+            for s in 0..=algebra.dimension() {
+                let a = random_grade(algebra, r, &mut rng);
+                let b = random_grade(algebra, s, &mut rng);
+                let want = if r <= s { a.left_contraction(&b) } else { a.right_contraction(&b) };
+                assert_close(&format!("{name} grades {r},{s}"), &a.fat_dot(&b), &want);
+            }
+        }
+    }
+}
+
 #[test]
 fn scalar_product_norm_and_commutator() {
     let mut rng = Pcg64::seed_from_u64(7);

@@ -17,6 +17,7 @@
 mod bivector;
 pub mod contraction;
 mod convert;
+mod generated;
 pub mod geometric;
 pub mod geometry;
 #[cfg(feature = "glam")]
