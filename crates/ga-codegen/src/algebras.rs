@@ -6,7 +6,7 @@ use crate::model::{AlgebraSpec, Dual, Inner, Regressive, Storage, TypeSpec};
 /// Every algebra `ga` holds, in the order they are written.
 #[must_use]
 pub fn all() -> Vec<AlgebraSpec> {
-    vec![g3()]
+    vec![g3(), pga()]
 }
 
 /// G(3,0,0), the report's algebra. Its types (with their hand-written geometry, `Display` and
@@ -46,5 +46,72 @@ fn g3() -> AlgebraSpec {
         ],
         versors: &["Vector", "Bivector", "Rotor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Rotor"],
+    }
+}
+
+/// Projective geometric algebra R(3,0,1), plane-based, in the basis of bivector.net and Klein.
+fn pga() -> AlgebraSpec {
+    AlgebraSpec {
+        name: "pga",
+        title: "R(3,0,1)",
+        dir: "crates/ga/src/pga/generated",
+        module: "crate::pga",
+        generators: &[('0', 0.0), ('1', 1.0), ('2', 1.0), ('3', 1.0)],
+        basis: &[
+            "1", "e0", "e1", "e2", "e3", "e01", "e02", "e03", "e12", "e31", "e23", "e021", "e013",
+            "e032", "e123", "e0123",
+        ],
+        types: vec![
+            TypeSpec::fields(
+                "Plane",
+                "A plane (grade 1) `e0 e0 + e1 e1 + e2 e2 + e3 e3`: the plane \
+                 `e1 x + e2 y + e3 z + e0 = 0`.",
+                &["e0", "e1", "e2", "e3"],
+            ),
+            TypeSpec::fields(
+                "Line",
+                "A line (grade 2): the ideal part `e01, e02, e03` and the Euclidean part \
+                 `e12, e31, e23`.",
+                &["e01", "e02", "e03", "e12", "e31", "e23"],
+            ),
+            TypeSpec::fields(
+                "Point",
+                "A point (grade 3) `x e032 + y e013 + z e021 + w e123`: the Euclidean point \
+                 `(x, y, z) / w`, or the direction `(x, y, z)` when `w = 0` (an ideal point).",
+                &["e021", "e013", "e032", "e123"],
+            ),
+            TypeSpec::fields(
+                "Motor",
+                "A motor (the even subalgebra): rotations, translations and screws.",
+                &["1", "e01", "e02", "e03", "e12", "e31", "e23", "e0123"],
+            ),
+            TypeSpec::fields(
+                "Rotor",
+                "A rotor: a rotation about an axis through the origin (scalar and Euclidean \
+                 bivector).",
+                &["1", "e12", "e31", "e23"],
+            ),
+            TypeSpec::fields(
+                "Translator",
+                "A translator: a translation (scalar and ideal bivector).",
+                &["1", "e01", "e02", "e03"],
+            ),
+            TypeSpec::fields("Pseudoscalar", "A multiple of the pseudoscalar `e0123`.", &["e0123"]),
+            TypeSpec::fields(
+                "Multivector",
+                "A general multivector of R(3,0,1), sixteen coefficients in the basis order.",
+                &[
+                    "1", "e0", "e1", "e2", "e3", "e01", "e02", "e03", "e12", "e31", "e23", "e021",
+                    "e013", "e032", "e123", "e0123",
+                ],
+            ),
+        ],
+        inner: Inner::FatDot,
+        regressive: Regressive::Complement,
+        dual: Dual::Complement,
+        emit_types: true,
+        hand_written: &[],
+        versors: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
+        sandwiched: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
     }
 }

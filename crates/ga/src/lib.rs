@@ -87,6 +87,7 @@
 
 pub mod errata;
 pub mod g3;
+pub mod pga;
 pub mod products;
 mod scalar;
 

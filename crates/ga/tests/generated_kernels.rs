@@ -142,6 +142,19 @@ fn laws<M: Blades>(basis: &Basis, name: &str, mul: impl Fn(M, M) -> M, reverse: 
     }
 }
 
+fn unary<A: Blades, C: Blades>(
+    basis: &Basis,
+    name: &str,
+    op: impl Fn(A) -> C,
+    reference: impl Fn(&Reference) -> Reference,
+) {
+    let mut rng = Pcg64::seed_from_u64(seed(name));
+    for case in 0..CASES {
+        let a = random::<A>(&mut rng);
+        compare(basis, name, case, op(a), &reference(&to_reference(basis, a)), norm(a));
+    }
+}
+
 mod g3 {
     use super::*;
     use ga::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
@@ -1336,6 +1349,3139 @@ mod g3 {
             3,
             |a, b| a ^ b,
             |a, b| a * b,
+        );
+    }
+}
+
+mod pga {
+    use super::*;
+    use ga::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
+
+    const BLADES: [(usize, f64); 16] = [
+        (0b0, 1.0),
+        (0b1, 1.0),
+        (0b10, 1.0),
+        (0b100, 1.0),
+        (0b1000, 1.0),
+        (0b11, 1.0),
+        (0b101, 1.0),
+        (0b1001, 1.0),
+        (0b110, 1.0),
+        (0b1010, -1.0),
+        (0b1100, 1.0),
+        (0b111, -1.0),
+        (0b1011, 1.0),
+        (0b1101, -1.0),
+        (0b1110, 1.0),
+        (0b1111, 1.0),
+    ];
+
+    fn basis() -> Basis {
+        Basis { algebra: Algebra::from_metric(&[0.0, 1.0, 1.0, 1.0]), blades: &BLADES }
+    }
+
+    impl Blades for Plane<f64> {
+        const BLADES: &'static [usize] = &[1, 2, 3, 4];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e0, self.e1, self.e2, self.e3]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e0: c[0], e1: c[1], e2: c[2], e3: c[3] }
+        }
+    }
+
+    impl Blades for Line<f64> {
+        const BLADES: &'static [usize] = &[5, 6, 7, 8, 9, 10];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e01, self.e02, self.e03, self.e12, self.e31, self.e23]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e01: c[0], e02: c[1], e03: c[2], e12: c[3], e31: c[4], e23: c[5] }
+        }
+    }
+
+    impl Blades for Point<f64> {
+        const BLADES: &'static [usize] = &[11, 12, 13, 14];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e021, self.e013, self.e032, self.e123]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e021: c[0], e013: c[1], e032: c[2], e123: c[3] }
+        }
+    }
+
+    impl Blades for Motor<f64> {
+        const BLADES: &'static [usize] = &[0, 5, 6, 7, 8, 9, 10, 15];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.s, self.e01, self.e02, self.e03, self.e12, self.e31, self.e23, self.e0123]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                s: c[0],
+                e01: c[1],
+                e02: c[2],
+                e03: c[3],
+                e12: c[4],
+                e31: c[5],
+                e23: c[6],
+                e0123: c[7],
+            }
+        }
+    }
+
+    impl Blades for Rotor<f64> {
+        const BLADES: &'static [usize] = &[0, 8, 9, 10];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.s, self.e12, self.e31, self.e23]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { s: c[0], e12: c[1], e31: c[2], e23: c[3] }
+        }
+    }
+
+    impl Blades for Translator<f64> {
+        const BLADES: &'static [usize] = &[0, 5, 6, 7];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.s, self.e01, self.e02, self.e03]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { s: c[0], e01: c[1], e02: c[2], e03: c[3] }
+        }
+    }
+
+    impl Blades for Pseudoscalar<f64> {
+        const BLADES: &'static [usize] = &[15];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e0123]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e0123: c[0] }
+        }
+    }
+
+    impl Blades for Multivector<f64> {
+        const BLADES: &'static [usize] = &[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+        fn coefficients(self) -> Vec<f64> {
+            vec![
+                self.s, self.e0, self.e1, self.e2, self.e3, self.e01, self.e02, self.e03, self.e12,
+                self.e31, self.e23, self.e021, self.e013, self.e032, self.e123, self.e0123,
+            ]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                s: c[0],
+                e0: c[1],
+                e1: c[2],
+                e2: c[3],
+                e3: c[4],
+                e01: c[5],
+                e02: c[6],
+                e03: c[7],
+                e12: c[8],
+                e31: c[9],
+                e23: c[10],
+                e021: c[11],
+                e013: c[12],
+                e032: c[13],
+                e123: c[14],
+                e0123: c[15],
+            }
+        }
+    }
+
+    #[test]
+    fn geometric_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Line<f64>, _>(
+            &basis,
+            "pga Plane geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Plane geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Line geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Point<f64>, _>(
+            &basis,
+            "pga Line geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Line geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Line<f64>, _>(
+            &basis,
+            "pga Point geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Point geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Motor geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Rotor geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Translator geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Line<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Point<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector geometric Plane",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector geometric Line",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector geometric Point",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector geometric Translator",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+    }
+
+    #[test]
+    fn outer_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Line<f64>, _>(
+            &basis,
+            "pga Plane outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane outer Point",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Line outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor outer Point",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Motor outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor outer Point",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Rotor outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator outer Point",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Translator outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Pseudoscalar outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector outer Plane",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector outer Line",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector outer Point",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector outer Translator",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+    }
+
+    #[test]
+    fn inner_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Line<f64>, _>(
+            &basis,
+            "pga Plane inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Plane inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Line inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Point<f64>, _>(
+            &basis,
+            "pga Line inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Line inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Line<f64>, _>(
+            &basis,
+            "pga Point inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Point inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Motor inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Rotor inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Translator inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Line<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Point<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector inner Plane",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector inner Line",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector inner Point",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector inner Motor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector inner Rotor",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector inner Translator",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.fat_dot(b),
+        );
+    }
+
+    #[test]
+    fn regressive_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Plane<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Plane regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Point<f64>, _>(
+            &basis,
+            "pga Line regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Line regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point regressive Plane",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Line<f64>, _>(
+            &basis,
+            "pga Point regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Point regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor regressive Plane",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Motor regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Rotor regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Translator regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Plane",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Line<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Point<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector regressive Plane",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector regressive Line",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector regressive Point",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector regressive Translator",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+    }
+
+    #[test]
+    fn left_contraction_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Plane",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Line<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Translator",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Point<f64>, _>(
+            &basis,
+            "pga Line left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Line left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Point<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Point left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Plane",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Translator",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Plane",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Translator",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Plane",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Translator",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Plane",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Line",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Point",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Translator",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+    }
+
+    #[test]
+    fn right_contraction_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Line right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Line<f64>, _>(
+            &basis,
+            "pga Point right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point right_contraction Point",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Point",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Line<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Point<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Point",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Plane",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Line",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Point",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Translator",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+    }
+
+    #[test]
+    fn scalar_product_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane scalar_product Plane",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line scalar_product Line",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point scalar_product Point",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor scalar_product Line",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor scalar_product Translator",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor scalar_product Line",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor scalar_product Translator",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Translator<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Translator scalar_product Translator",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Plane",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Line",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Point",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Translator",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+    }
+
+    #[test]
+    fn commutator_against_reference() {
+        let basis = basis();
+        binary::<Plane<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Plane commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Line<f64>, _>(
+            &basis,
+            "pga Plane commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Point<f64>, _>(
+            &basis,
+            "pga Plane commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Plane commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Plane commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Plane commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Plane commutator Pseudoscalar",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Plane<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Plane commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Line commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Line<f64>, _>(
+            &basis,
+            "pga Line commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Point<f64>, _>(
+            &basis,
+            "pga Line commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Line commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Line commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Line commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Line<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Line commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Point commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Line<f64>, _>(
+            &basis,
+            "pga Point commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Point<f64>, _>(
+            &basis,
+            "pga Point commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Point commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Point commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Point commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Point commutator Pseudoscalar",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Point<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Point commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Motor commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Motor commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Motor commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Motor commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Motor commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Motor commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Rotor commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Line<f64>, _>(
+            &basis,
+            "pga Rotor commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Point<f64>, _>(
+            &basis,
+            "pga Rotor commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Rotor commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Rotor commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Rotor commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Rotor commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Translator commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Line<f64>, _>(
+            &basis,
+            "pga Translator commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Point<f64>, _>(
+            &basis,
+            "pga Translator commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Translator commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Translator commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Translator<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Translator commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Pseudoscalar<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Pseudoscalar commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Pseudoscalar<f64>, Point<f64>, _>(
+            &basis,
+            "pga Pseudoscalar commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Pseudoscalar commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Plane<f64>, _>(
+            &basis,
+            "pga Multivector commutator Plane",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Line<f64>, _>(
+            &basis,
+            "pga Multivector commutator Line",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Point<f64>, _>(
+            &basis,
+            "pga Multivector commutator Point",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Multivector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "pga Multivector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Translator<f64>, _>(
+            &basis,
+            "pga Multivector commutator Translator",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Multivector commutator Pseudoscalar",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "pga Multivector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+    }
+
+    #[test]
+    fn sandwich_against_reference() {
+        let basis = basis();
+        sandwich::<Plane<f64>, Plane<f64>, Plane<f64>>(
+            &basis,
+            "pga Plane sandwich Plane",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Plane<f64>, Line<f64>, Line<f64>>(&basis, "pga Plane sandwich Line", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Plane<f64>, Point<f64>, Point<f64>>(
+            &basis,
+            "pga Plane sandwich Point",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Plane<f64>, Motor<f64>, Motor<f64>>(
+            &basis,
+            "pga Plane sandwich Motor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Plane<f64>, Rotor<f64>, Motor<f64>>(
+            &basis,
+            "pga Plane sandwich Rotor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Plane<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Plane sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Line<f64>, Plane<f64>, Plane<f64>>(&basis, "pga Line sandwich Plane", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Line<f64>, Line<f64>, Line<f64>>(&basis, "pga Line sandwich Line", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Line<f64>, Point<f64>, Point<f64>>(&basis, "pga Line sandwich Point", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Line<f64>, Motor<f64>, Motor<f64>>(&basis, "pga Line sandwich Motor", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Line<f64>, Rotor<f64>, Motor<f64>>(&basis, "pga Line sandwich Rotor", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Line<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Line sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Point<f64>, Plane<f64>, Plane<f64>>(
+            &basis,
+            "pga Point sandwich Plane",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Point<f64>, Line<f64>, Line<f64>>(&basis, "pga Point sandwich Line", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Point<f64>, Point<f64>, Point<f64>>(
+            &basis,
+            "pga Point sandwich Point",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Point<f64>, Motor<f64>, Motor<f64>>(
+            &basis,
+            "pga Point sandwich Motor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Point<f64>, Rotor<f64>, Motor<f64>>(
+            &basis,
+            "pga Point sandwich Rotor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Point<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Point sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Plane<f64>, Plane<f64>>(
+            &basis,
+            "pga Motor sandwich Plane",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Line<f64>, Line<f64>>(&basis, "pga Motor sandwich Line", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Motor<f64>, Point<f64>, Point<f64>>(
+            &basis,
+            "pga Motor sandwich Point",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Motor<f64>, Motor<f64>>(
+            &basis,
+            "pga Motor sandwich Motor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Rotor<f64>, Motor<f64>>(
+            &basis,
+            "pga Motor sandwich Rotor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Motor sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Plane<f64>, Plane<f64>>(
+            &basis,
+            "pga Rotor sandwich Plane",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Line<f64>, Line<f64>>(&basis, "pga Rotor sandwich Line", |v, x| {
+            v.sandwich(x)
+        });
+        sandwich::<Rotor<f64>, Point<f64>, Point<f64>>(
+            &basis,
+            "pga Rotor sandwich Point",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Motor<f64>, Motor<f64>>(
+            &basis,
+            "pga Rotor sandwich Motor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Rotor<f64>, Rotor<f64>>(
+            &basis,
+            "pga Rotor sandwich Rotor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Rotor sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Plane<f64>, Plane<f64>>(
+            &basis,
+            "pga Translator sandwich Plane",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Line<f64>, Line<f64>>(
+            &basis,
+            "pga Translator sandwich Line",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Point<f64>, Point<f64>>(
+            &basis,
+            "pga Translator sandwich Point",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Motor<f64>, Motor<f64>>(
+            &basis,
+            "pga Translator sandwich Motor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Rotor<f64>, Motor<f64>>(
+            &basis,
+            "pga Translator sandwich Rotor",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Translator<f64>, Translator<f64>, Translator<f64>>(
+            &basis,
+            "pga Translator sandwich Translator",
+            |v, x| v.sandwich(x),
+        );
+    }
+
+    #[test]
+    fn algebra_laws() {
+        let basis = basis();
+        laws::<Multivector<f64>>(&basis, "pga laws", |a, b| a * b, |a| a.reverse());
+        outer_is_graded_geometric::<Plane<f64>, Plane<f64>, _, _>(
+            &basis,
+            "pga Plane ^ Plane",
+            2,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Plane<f64>, Line<f64>, _, _>(
+            &basis,
+            "pga Plane ^ Line",
+            3,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Plane<f64>, Point<f64>, _, _>(
+            &basis,
+            "pga Plane ^ Point",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Line<f64>, Plane<f64>, _, _>(
+            &basis,
+            "pga Line ^ Plane",
+            3,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Line<f64>, Line<f64>, _, _>(
+            &basis,
+            "pga Line ^ Line",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Point<f64>, Plane<f64>, _, _>(
+            &basis,
+            "pga Point ^ Plane",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+    }
+
+    #[test]
+    fn unary_against_reference() {
+        let basis = basis();
+        unary::<Plane<f64>, _>(&basis, "pga Plane::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Plane<f64>, _>(
+            &basis,
+            "pga Plane::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Plane<f64>, _>(
+            &basis,
+            "pga Plane::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Plane<f64>, _>(&basis, "pga Plane::dual", |a| a.dual(), |a| a.right_complement());
+        unary::<Plane<f64>, _>(
+            &basis,
+            "pga Plane::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Plane<f64>, _>(
+            &basis,
+            "pga Plane::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Line<f64>, _>(&basis, "pga Line::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Line<f64>, _>(
+            &basis,
+            "pga Line::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Line<f64>, _>(&basis, "pga Line::conjugate", |a| a.conjugate(), |a| a.conjugate());
+        unary::<Line<f64>, _>(&basis, "pga Line::dual", |a| a.dual(), |a| a.right_complement());
+        unary::<Line<f64>, _>(&basis, "pga Line::undual", |a| a.undual(), |a| a.left_complement());
+        unary::<Line<f64>, _>(
+            &basis,
+            "pga Line::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Point<f64>, _>(&basis, "pga Point::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Point<f64>, _>(
+            &basis,
+            "pga Point::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Point<f64>, _>(
+            &basis,
+            "pga Point::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Point<f64>, _>(&basis, "pga Point::dual", |a| a.dual(), |a| a.right_complement());
+        unary::<Point<f64>, _>(
+            &basis,
+            "pga Point::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Point<f64>, _>(
+            &basis,
+            "pga Point::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Motor<f64>, _>(&basis, "pga Motor::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Motor<f64>, _>(
+            &basis,
+            "pga Motor::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Motor<f64>, _>(
+            &basis,
+            "pga Motor::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Motor<f64>, _>(&basis, "pga Motor::dual", |a| a.dual(), |a| a.right_complement());
+        unary::<Motor<f64>, _>(
+            &basis,
+            "pga Motor::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Motor<f64>, _>(
+            &basis,
+            "pga Motor::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Rotor<f64>, _>(&basis, "pga Rotor::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "pga Rotor::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "pga Rotor::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Rotor<f64>, _>(&basis, "pga Rotor::dual", |a| a.dual(), |a| a.right_complement());
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "pga Rotor::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "pga Rotor::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::dual",
+            |a| a.dual(),
+            |a| a.right_complement(),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Translator<f64>, _>(
+            &basis,
+            "pga Translator::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::dual",
+            |a| a.dual(),
+            |a| a.right_complement(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "pga Pseudoscalar::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::dual",
+            |a| a.dual(),
+            |a| a.right_complement(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::undual",
+            |a| a.undual(),
+            |a| a.left_complement(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "pga Multivector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
         );
     }
 }
