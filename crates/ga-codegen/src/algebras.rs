@@ -6,7 +6,7 @@ use crate::model::{AlgebraSpec, Dual, Inner, Regressive, Storage, TypeSpec};
 /// Every algebra `ga` holds, in the order they are written.
 #[must_use]
 pub fn all() -> Vec<AlgebraSpec> {
-    vec![g3(), pga()]
+    vec![g3(), pga(), cga()]
 }
 
 /// G(3,0,0), the report's algebra. Its types (with their hand-written geometry, `Display` and
@@ -115,3 +115,75 @@ fn pga() -> AlgebraSpec {
         sandwiched: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
     }
 }
+/// Conformal geometric algebra R(4,1), with `e4 = e+` (`e4² = 1`) and `e5 = e-` (`e5² = -1`),
+/// every blade in increasing generator order.
+fn cga() -> AlgebraSpec {
+    AlgebraSpec {
+        name: "cga",
+        title: "R(4,1)",
+        dir: "crates/ga/src/cga/generated",
+        module: "crate::cga",
+        generators: &[('1', 1.0), ('2', 1.0), ('3', 1.0), ('4', 1.0), ('5', -1.0)],
+        basis: &CGA_BASIS,
+        types: vec![
+            TypeSpec::fields(
+                "Vector",
+                "A vector (grade 1): points, dual spheres and dual planes.",
+                &CGA_BASIS[1..6],
+            ),
+            TypeSpec::fields(
+                "Bivector",
+                "A bivector (grade 2): point pairs (dual).",
+                &CGA_BASIS[6..16],
+            ),
+            TypeSpec::fields(
+                "Trivector",
+                "A trivector (grade 3): circles and lines.",
+                &CGA_BASIS[16..26],
+            ),
+            TypeSpec::fields(
+                "Quadvector",
+                "A quadvector (grade 4): spheres and planes.",
+                &CGA_BASIS[26..31],
+            ),
+            TypeSpec::fields(
+                "Pseudoscalar",
+                "A multiple of the pseudoscalar `e12345`.",
+                &["e12345"],
+            ),
+            TypeSpec::fields(
+                "Rotor",
+                "A Euclidean rotor: a rotation about the origin (scalar and `e12, e13, e23`).",
+                &["1", "e12", "e13", "e23"],
+            ),
+            TypeSpec::fields(
+                "Motor",
+                "An element of the even subalgebra (grades 0, 2, 4): rotors, translators, \
+                 dilators and their products.",
+                &[
+                    "1", "e12", "e13", "e14", "e15", "e23", "e24", "e25", "e34", "e35", "e45",
+                    "e1234", "e1235", "e1245", "e1345", "e2345",
+                ],
+            ),
+            TypeSpec::fields(
+                "Multivector",
+                "A general multivector of R(4,1), thirty-two coefficients in the basis order.",
+                &CGA_BASIS,
+            ),
+        ],
+        inner: Inner::LeftContraction,
+        regressive: Regressive::Complement,
+        dual: Dual::InversePseudoscalar,
+        emit_types: true,
+        hand_written: &[],
+        versors: &["Vector", "Rotor", "Motor"],
+        sandwiched: &["Vector", "Bivector", "Trivector", "Quadvector"],
+    }
+}
+
+/// The conformal basis: by grade, and within a grade in lexicographic order of the generators.
+static CGA_BASIS: [&str; 32] = [
+    "1", "e1", "e2", "e3", "e4", "e5", "e12", "e13", "e14", "e15", "e23", "e24", "e25", "e34",
+    "e35", "e45", "e123", "e124", "e125", "e134", "e135", "e145", "e234", "e235", "e245", "e345",
+    "e1234", "e1235", "e1245", "e1345", "e2345", "e12345",
+];

@@ -85,6 +85,7 @@
 
 #![deny(missing_docs)]
 
+pub mod cga;
 pub mod errata;
 pub mod g3;
 pub mod pga;

@@ -4485,3 +4485,3037 @@ mod pga {
         );
     }
 }
+
+mod cga {
+    use super::*;
+    use ga::cga::{
+        Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
+    };
+
+    const BLADES: [(usize, f64); 32] = [
+        (0b0, 1.0),
+        (0b1, 1.0),
+        (0b10, 1.0),
+        (0b100, 1.0),
+        (0b1000, 1.0),
+        (0b10000, 1.0),
+        (0b11, 1.0),
+        (0b101, 1.0),
+        (0b1001, 1.0),
+        (0b10001, 1.0),
+        (0b110, 1.0),
+        (0b1010, 1.0),
+        (0b10010, 1.0),
+        (0b1100, 1.0),
+        (0b10100, 1.0),
+        (0b11000, 1.0),
+        (0b111, 1.0),
+        (0b1011, 1.0),
+        (0b10011, 1.0),
+        (0b1101, 1.0),
+        (0b10101, 1.0),
+        (0b11001, 1.0),
+        (0b1110, 1.0),
+        (0b10110, 1.0),
+        (0b11010, 1.0),
+        (0b11100, 1.0),
+        (0b1111, 1.0),
+        (0b10111, 1.0),
+        (0b11011, 1.0),
+        (0b11101, 1.0),
+        (0b11110, 1.0),
+        (0b11111, 1.0),
+    ];
+
+    fn basis() -> Basis {
+        Basis { algebra: Algebra::from_metric(&[1.0, 1.0, 1.0, 1.0, -1.0]), blades: &BLADES }
+    }
+
+    impl Blades for Vector<f64> {
+        const BLADES: &'static [usize] = &[1, 2, 3, 4, 5];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e1, self.e2, self.e3, self.e4, self.e5]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e1: c[0], e2: c[1], e3: c[2], e4: c[3], e5: c[4] }
+        }
+    }
+
+    impl Blades for Bivector<f64> {
+        const BLADES: &'static [usize] = &[6, 7, 8, 9, 10, 11, 12, 13, 14, 15];
+        fn coefficients(self) -> Vec<f64> {
+            vec![
+                self.e12, self.e13, self.e14, self.e15, self.e23, self.e24, self.e25, self.e34,
+                self.e35, self.e45,
+            ]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                e12: c[0],
+                e13: c[1],
+                e14: c[2],
+                e15: c[3],
+                e23: c[4],
+                e24: c[5],
+                e25: c[6],
+                e34: c[7],
+                e35: c[8],
+                e45: c[9],
+            }
+        }
+    }
+
+    impl Blades for Trivector<f64> {
+        const BLADES: &'static [usize] = &[16, 17, 18, 19, 20, 21, 22, 23, 24, 25];
+        fn coefficients(self) -> Vec<f64> {
+            vec![
+                self.e123, self.e124, self.e125, self.e134, self.e135, self.e145, self.e234,
+                self.e235, self.e245, self.e345,
+            ]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                e123: c[0],
+                e124: c[1],
+                e125: c[2],
+                e134: c[3],
+                e135: c[4],
+                e145: c[5],
+                e234: c[6],
+                e235: c[7],
+                e245: c[8],
+                e345: c[9],
+            }
+        }
+    }
+
+    impl Blades for Quadvector<f64> {
+        const BLADES: &'static [usize] = &[26, 27, 28, 29, 30];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e1234, self.e1235, self.e1245, self.e1345, self.e2345]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e1234: c[0], e1235: c[1], e1245: c[2], e1345: c[3], e2345: c[4] }
+        }
+    }
+
+    impl Blades for Pseudoscalar<f64> {
+        const BLADES: &'static [usize] = &[31];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.e12345]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { e12345: c[0] }
+        }
+    }
+
+    impl Blades for Rotor<f64> {
+        const BLADES: &'static [usize] = &[0, 6, 7, 10];
+        fn coefficients(self) -> Vec<f64> {
+            vec![self.s, self.e12, self.e13, self.e23]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self { s: c[0], e12: c[1], e13: c[2], e23: c[3] }
+        }
+    }
+
+    impl Blades for Motor<f64> {
+        const BLADES: &'static [usize] =
+            &[0, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 26, 27, 28, 29, 30];
+        fn coefficients(self) -> Vec<f64> {
+            vec![
+                self.s, self.e12, self.e13, self.e14, self.e15, self.e23, self.e24, self.e25,
+                self.e34, self.e35, self.e45, self.e1234, self.e1235, self.e1245, self.e1345,
+                self.e2345,
+            ]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                s: c[0],
+                e12: c[1],
+                e13: c[2],
+                e14: c[3],
+                e15: c[4],
+                e23: c[5],
+                e24: c[6],
+                e25: c[7],
+                e34: c[8],
+                e35: c[9],
+                e45: c[10],
+                e1234: c[11],
+                e1235: c[12],
+                e1245: c[13],
+                e1345: c[14],
+                e2345: c[15],
+            }
+        }
+    }
+
+    impl Blades for Multivector<f64> {
+        const BLADES: &'static [usize] = &[
+            0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23,
+            24, 25, 26, 27, 28, 29, 30, 31,
+        ];
+        fn coefficients(self) -> Vec<f64> {
+            vec![
+                self.s,
+                self.e1,
+                self.e2,
+                self.e3,
+                self.e4,
+                self.e5,
+                self.e12,
+                self.e13,
+                self.e14,
+                self.e15,
+                self.e23,
+                self.e24,
+                self.e25,
+                self.e34,
+                self.e35,
+                self.e45,
+                self.e123,
+                self.e124,
+                self.e125,
+                self.e134,
+                self.e135,
+                self.e145,
+                self.e234,
+                self.e235,
+                self.e245,
+                self.e345,
+                self.e1234,
+                self.e1235,
+                self.e1245,
+                self.e1345,
+                self.e2345,
+                self.e12345,
+            ]
+        }
+        fn from_coefficients(c: &[f64]) -> Self {
+            Self {
+                s: c[0],
+                e1: c[1],
+                e2: c[2],
+                e3: c[3],
+                e4: c[4],
+                e5: c[5],
+                e12: c[6],
+                e13: c[7],
+                e14: c[8],
+                e15: c[9],
+                e23: c[10],
+                e24: c[11],
+                e25: c[12],
+                e34: c[13],
+                e35: c[14],
+                e45: c[15],
+                e123: c[16],
+                e124: c[17],
+                e125: c[18],
+                e134: c[19],
+                e135: c[20],
+                e145: c[21],
+                e234: c[22],
+                e235: c[23],
+                e245: c[24],
+                e345: c[25],
+                e1234: c[26],
+                e1235: c[27],
+                e1245: c[28],
+                e1345: c[29],
+                e2345: c[30],
+                e12345: c[31],
+            }
+        }
+    }
+
+    #[test]
+    fn geometric_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Vector geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Vector geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Vector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Bivector geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Bivector geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Bivector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Trivector geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Trivector geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Trivector geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Trivector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Trivector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Rotor geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Motor geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector geometric Vector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector geometric Bivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector geometric Trivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector geometric Quadvector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector geometric Multivector",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+    }
+
+    #[test]
+    fn outer_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Vector outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Vector outer Trivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector outer Quadvector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Bivector outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector outer Trivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Trivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Trivector outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Trivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Trivector outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Trivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Trivector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Quadvector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Quadvector outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Quadvector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Quadvector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor outer Trivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor outer Quadvector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Rotor outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor outer Trivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor outer Quadvector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Motor outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector outer Vector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector outer Bivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector outer Trivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector outer Quadvector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector outer Pseudoscalar",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector outer Rotor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector outer Motor",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector outer Multivector",
+            |a, b| a ^ b,
+            |a, b| a.outer(b),
+        );
+    }
+
+    #[test]
+    fn inner_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector inner Vector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Vector inner Bivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Vector inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Vector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector inner Rotor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector inner Bivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Bivector inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Bivector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector inner Rotor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Trivector inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Trivector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Quadvector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor inner Vector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor inner Bivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Rotor inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor inner Rotor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor inner Vector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor inner Bivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Motor inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor inner Rotor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector inner Vector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector inner Bivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector inner Trivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector inner Quadvector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector inner Pseudoscalar",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector inner Rotor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector inner Motor",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector inner Multivector",
+            |a, b| a | b,
+            |a, b| a.left_contraction(b),
+        );
+    }
+
+    #[test]
+    fn regressive_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Vector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Vector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Bivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Bivector regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Bivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Bivector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Trivector regressive Bivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Trivector regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Trivector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Trivector regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Vector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Bivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Vector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Bivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Rotor regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor regressive Vector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor regressive Bivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Motor regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector regressive Vector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector regressive Bivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector regressive Trivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector regressive Quadvector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector regressive Pseudoscalar",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector regressive Rotor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector regressive Motor",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector regressive Multivector",
+            |a, b| a & b,
+            |a, b| a.regressive(b),
+        );
+    }
+
+    #[test]
+    fn left_contraction_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Vector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Bivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Bivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Trivector left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Trivector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Quadvector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Vector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Bivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Vector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Bivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Vector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Bivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Trivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Quadvector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Pseudoscalar",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Rotor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Motor",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector left_contraction Multivector",
+            |a, b| a.left_contraction(b),
+            |a, b| a.left_contraction(b),
+        );
+    }
+
+    #[test]
+    fn right_contraction_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Bivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Bivector right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Trivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Trivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Quadvector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Trivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Quadvector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Pseudoscalar",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Trivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Quadvector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Vector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Bivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Trivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Quadvector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Pseudoscalar",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Rotor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Motor",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector right_contraction Multivector",
+            |a, b| a.right_contraction(b),
+            |a, b| a.right_contraction(b),
+        );
+    }
+
+    #[test]
+    fn scalar_product_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector scalar_product Vector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector scalar_product Bivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector scalar_product Trivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector scalar_product Quadvector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Pseudoscalar<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar scalar_product Pseudoscalar",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Pseudoscalar<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Pseudoscalar scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor scalar_product Bivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor scalar_product Bivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor scalar_product Quadvector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Vector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Bivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Trivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Quadvector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Pseudoscalar",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Rotor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Motor",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector scalar_product Multivector",
+            |a, b| a.scalar_product(b),
+            |a, b| a.algebra().scalar(a.scalar_product(b)),
+        );
+    }
+
+    #[test]
+    fn commutator_against_reference() {
+        let basis = basis();
+        binary::<Vector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Vector commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Vector commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Vector commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Vector commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Vector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Vector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Vector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Vector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Bivector commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Bivector commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Bivector commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Bivector commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Bivector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Bivector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Bivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Bivector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Trivector commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Trivector commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Trivector commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Trivector commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Trivector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Trivector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Trivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Trivector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Quadvector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Quadvector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Rotor commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Rotor commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Rotor commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Rotor commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Rotor commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Rotor commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Rotor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Rotor commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Motor commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Motor commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Motor commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Motor commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Motor commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Motor commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Motor<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Motor commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Vector<f64>, _>(
+            &basis,
+            "cga Multivector commutator Vector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Bivector<f64>, _>(
+            &basis,
+            "cga Multivector commutator Bivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Trivector<f64>, _>(
+            &basis,
+            "cga Multivector commutator Trivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Quadvector<f64>, _>(
+            &basis,
+            "cga Multivector commutator Quadvector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Rotor<f64>, _>(
+            &basis,
+            "cga Multivector commutator Rotor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Motor<f64>, _>(
+            &basis,
+            "cga Multivector commutator Motor",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+        binary::<Multivector<f64>, Multivector<f64>, _>(
+            &basis,
+            "cga Multivector commutator Multivector",
+            |a, b| a.commutator(b),
+            |a, b| a.commutator(b),
+        );
+    }
+
+    #[test]
+    fn sandwich_against_reference() {
+        let basis = basis();
+        sandwich::<Vector<f64>, Vector<f64>, Vector<f64>>(
+            &basis,
+            "cga Vector sandwich Vector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Vector<f64>, Bivector<f64>, Bivector<f64>>(
+            &basis,
+            "cga Vector sandwich Bivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Vector<f64>, Trivector<f64>, Trivector<f64>>(
+            &basis,
+            "cga Vector sandwich Trivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Vector<f64>, Quadvector<f64>, Quadvector<f64>>(
+            &basis,
+            "cga Vector sandwich Quadvector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Vector<f64>, Vector<f64>>(
+            &basis,
+            "cga Rotor sandwich Vector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Bivector<f64>, Bivector<f64>>(
+            &basis,
+            "cga Rotor sandwich Bivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Trivector<f64>, Trivector<f64>>(
+            &basis,
+            "cga Rotor sandwich Trivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Rotor<f64>, Quadvector<f64>, Quadvector<f64>>(
+            &basis,
+            "cga Rotor sandwich Quadvector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Vector<f64>, Vector<f64>>(
+            &basis,
+            "cga Motor sandwich Vector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Bivector<f64>, Bivector<f64>>(
+            &basis,
+            "cga Motor sandwich Bivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Trivector<f64>, Trivector<f64>>(
+            &basis,
+            "cga Motor sandwich Trivector",
+            |v, x| v.sandwich(x),
+        );
+        sandwich::<Motor<f64>, Quadvector<f64>, Quadvector<f64>>(
+            &basis,
+            "cga Motor sandwich Quadvector",
+            |v, x| v.sandwich(x),
+        );
+    }
+
+    #[test]
+    fn algebra_laws() {
+        let basis = basis();
+        laws::<Multivector<f64>>(&basis, "cga laws", |a, b| a * b, |a| a.reverse());
+        outer_is_graded_geometric::<Vector<f64>, Vector<f64>, _, _>(
+            &basis,
+            "cga Vector ^ Vector",
+            2,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Vector<f64>, Bivector<f64>, _, _>(
+            &basis,
+            "cga Vector ^ Bivector",
+            3,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Vector<f64>, Trivector<f64>, _, _>(
+            &basis,
+            "cga Vector ^ Trivector",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Vector<f64>, Quadvector<f64>, _, _>(
+            &basis,
+            "cga Vector ^ Quadvector",
+            5,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Bivector<f64>, Vector<f64>, _, _>(
+            &basis,
+            "cga Bivector ^ Vector",
+            3,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Bivector<f64>, Bivector<f64>, _, _>(
+            &basis,
+            "cga Bivector ^ Bivector",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Bivector<f64>, Trivector<f64>, _, _>(
+            &basis,
+            "cga Bivector ^ Trivector",
+            5,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Trivector<f64>, Vector<f64>, _, _>(
+            &basis,
+            "cga Trivector ^ Vector",
+            4,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Trivector<f64>, Bivector<f64>, _, _>(
+            &basis,
+            "cga Trivector ^ Bivector",
+            5,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+        outer_is_graded_geometric::<Quadvector<f64>, Vector<f64>, _, _>(
+            &basis,
+            "cga Quadvector ^ Vector",
+            5,
+            |a, b| a ^ b,
+            |a, b| a * b,
+        );
+    }
+
+    #[test]
+    fn unary_against_reference() {
+        let basis = basis();
+        unary::<Vector<f64>, _>(&basis, "cga Vector::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Vector<f64>, _>(
+            &basis,
+            "cga Vector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Vector<f64>, _>(
+            &basis,
+            "cga Vector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Vector<f64>, _>(&basis, "cga Vector::dual", |a| a.dual(), |a| a.dual().unwrap());
+        unary::<Vector<f64>, _>(&basis, "cga Vector::undual", |a| a.undual(), |a| a.undual());
+        unary::<Vector<f64>, _>(
+            &basis,
+            "cga Vector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Bivector<f64>, _>(
+            &basis,
+            "cga Bivector::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Bivector<f64>, _>(
+            &basis,
+            "cga Bivector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Bivector<f64>, _>(
+            &basis,
+            "cga Bivector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Bivector<f64>, _>(
+            &basis,
+            "cga Bivector::dual",
+            |a| a.dual(),
+            |a| a.dual().unwrap(),
+        );
+        unary::<Bivector<f64>, _>(&basis, "cga Bivector::undual", |a| a.undual(), |a| a.undual());
+        unary::<Bivector<f64>, _>(
+            &basis,
+            "cga Bivector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Trivector<f64>, _>(
+            &basis,
+            "cga Trivector::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Trivector<f64>, _>(
+            &basis,
+            "cga Trivector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Trivector<f64>, _>(
+            &basis,
+            "cga Trivector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Trivector<f64>, _>(
+            &basis,
+            "cga Trivector::dual",
+            |a| a.dual(),
+            |a| a.dual().unwrap(),
+        );
+        unary::<Trivector<f64>, _>(&basis, "cga Trivector::undual", |a| a.undual(), |a| a.undual());
+        unary::<Trivector<f64>, _>(
+            &basis,
+            "cga Trivector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::dual",
+            |a| a.dual(),
+            |a| a.dual().unwrap(),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::undual",
+            |a| a.undual(),
+            |a| a.undual(),
+        );
+        unary::<Quadvector<f64>, _>(
+            &basis,
+            "cga Quadvector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::dual",
+            |a| a.dual(),
+            |a| a.dual().unwrap(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::undual",
+            |a| a.undual(),
+            |a| a.undual(),
+        );
+        unary::<Pseudoscalar<f64>, _>(
+            &basis,
+            "cga Pseudoscalar::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Rotor<f64>, _>(&basis, "cga Rotor::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "cga Rotor::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "cga Rotor::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Rotor<f64>, _>(&basis, "cga Rotor::dual", |a| a.dual(), |a| a.dual().unwrap());
+        unary::<Rotor<f64>, _>(&basis, "cga Rotor::undual", |a| a.undual(), |a| a.undual());
+        unary::<Rotor<f64>, _>(
+            &basis,
+            "cga Rotor::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Motor<f64>, _>(&basis, "cga Motor::reverse", |a| a.reverse(), |a| a.reverse());
+        unary::<Motor<f64>, _>(
+            &basis,
+            "cga Motor::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Motor<f64>, _>(
+            &basis,
+            "cga Motor::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Motor<f64>, _>(&basis, "cga Motor::dual", |a| a.dual(), |a| a.dual().unwrap());
+        unary::<Motor<f64>, _>(&basis, "cga Motor::undual", |a| a.undual(), |a| a.undual());
+        unary::<Motor<f64>, _>(
+            &basis,
+            "cga Motor::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::reverse",
+            |a| a.reverse(),
+            |a| a.reverse(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::grade_involution",
+            |a| a.grade_involution(),
+            |a| a.grade_involution(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::conjugate",
+            |a| a.conjugate(),
+            |a| a.conjugate(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::dual",
+            |a| a.dual(),
+            |a| a.dual().unwrap(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::undual",
+            |a| a.undual(),
+            |a| a.undual(),
+        );
+        unary::<Multivector<f64>, _>(
+            &basis,
+            "cga Multivector::norm_squared",
+            |a| a.norm_squared(),
+            |a| a.algebra().scalar(a.norm_squared()),
+        );
+    }
+}
