@@ -330,7 +330,7 @@ impl Resolved<'_> {
                     (self.rust_type(Some(tv)), self.rust_type(Some(tx)), self.rust_type(ty));
                 write!(
                     code,
-                    "/// Sandwich `{v} x {v}̃` with `x` a {x}, result {o}.\nimpl<T: Scalar> Sandwich<{xt}> for {vt} {{\n    \
+                    "/// Sandwich `v x ṽ` of a {v} `v` and a {x} `x` -> {o}.\nimpl<T: Scalar> Sandwich<{xt}> for {vt} {{\n    \
                      type Output = {out};\n    #[inline]\n    fn sandwich(self, x: {xt}) -> {out} {{\n        let a = self;\n        {body}\n    }}\n}}\n\n",
                     o = self.doc_type(ty)
                 )

@@ -7,7 +7,7 @@ use crate::Scalar;
 use crate::cga::{Bivector, Motor, Quadvector, Rotor, Trivector, Vector};
 use crate::products::Sandwich;
 
-/// Sandwich `Vector x Vector̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
@@ -58,7 +58,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -154,7 +154,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -250,7 +250,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Quadvector, result Quadvector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Quadvector `x` -> Quadvector.
 impl<T: Scalar> Sandwich<Quadvector<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
@@ -301,7 +301,7 @@ impl<T: Scalar> Sandwich<Quadvector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
@@ -333,7 +333,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -382,7 +382,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Rotor<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -431,7 +431,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Quadvector, result Quadvector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Quadvector `x` -> Quadvector.
 impl<T: Scalar> Sandwich<Quadvector<T>> for Rotor<T> {
     type Output = Quadvector<T>;
     #[inline]
@@ -463,7 +463,7 @@ impl<T: Scalar> Sandwich<Quadvector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Motor `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
@@ -789,7 +789,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Motor `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Motor<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -1748,7 +1748,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Motor `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Motor<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -2724,7 +2724,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Quadvector, result Quadvector.
+/// Sandwich `v x ṽ` of a Motor `v` and a Quadvector `x` -> Quadvector.
 impl<T: Scalar> Sandwich<Quadvector<T>> for Motor<T> {
     type Output = Quadvector<T>;
     #[inline]

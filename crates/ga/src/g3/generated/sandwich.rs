@@ -7,7 +7,7 @@ use crate::Scalar;
 use crate::g3::{Bivector, Rotor, Trivector, Vector};
 use crate::products::Sandwich;
 
-/// Sandwich `Vector x Vector̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
@@ -27,7 +27,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -53,7 +53,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Vector `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -66,7 +66,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Vector x Vector̃` with `x` a Rotor, result Rotor.
+/// Sandwich `v x ṽ` of a Vector `v` and a Rotor `x` -> Rotor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -93,7 +93,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Vector<T> {
     }
 }
 
-/// Sandwich `Bivector x Bivector̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Bivector `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
@@ -119,7 +119,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Bivector<T> {
     }
 }
 
-/// Sandwich `Bivector x Bivector̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Bivector `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -145,7 +145,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Bivector<T> {
     }
 }
 
-/// Sandwich `Bivector x Bivector̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Bivector `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -158,7 +158,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Bivector<T> {
     }
 }
 
-/// Sandwich `Bivector x Bivector̃` with `x` a Rotor, result Rotor.
+/// Sandwich `v x ṽ` of a Bivector `v` and a Rotor `x` -> Rotor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Bivector<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -185,7 +185,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Bivector<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Vector, result Vector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Vector `x` -> Vector.
 impl<T: Scalar> Sandwich<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
@@ -215,7 +215,7 @@ impl<T: Scalar> Sandwich<Vector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Bivector, result Bivector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Bivector `x` -> Bivector.
 impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
@@ -245,7 +245,7 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Trivector, result Trivector.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Trivector `x` -> Trivector.
 impl<T: Scalar> Sandwich<Trivector<T>> for Rotor<T> {
     type Output = Trivector<T>;
     #[inline]
@@ -259,7 +259,7 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Rotor, result Rotor.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Rotor `x` -> Rotor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]

@@ -7,7 +7,7 @@ use crate::Scalar;
 use crate::pga::{Line, Motor, Plane, Point, Rotor, Translator};
 use crate::products::Sandwich;
 
-/// Sandwich `Plane x Planẽ` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Plane `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
@@ -34,7 +34,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Plane x Planẽ` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Plane `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Plane<T> {
     type Output = Line<T>;
     #[inline]
@@ -78,7 +78,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Plane x Planẽ` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Plane `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
@@ -111,7 +111,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Plane x Planẽ` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Plane `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Plane<T> {
     type Output = Motor<T>;
     #[inline]
@@ -157,7 +157,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Plane x Planẽ` with `x` a Rotor, result Motor.
+/// Sandwich `v x ṽ` of a Plane `v` and a Rotor `x` -> Motor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Plane<T> {
     type Output = Motor<T>;
     #[inline]
@@ -191,7 +191,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Plane x Planẽ` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Plane `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Plane<T> {
     type Output = Translator<T>;
     #[inline]
@@ -218,7 +218,7 @@ impl<T: Scalar> Sandwich<Translator<T>> for Plane<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Line `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
@@ -254,7 +254,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Line `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
@@ -307,7 +307,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Line `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Line<T> {
     type Output = Point<T>;
     #[inline]
@@ -343,7 +343,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Line `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
@@ -399,7 +399,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Rotor, result Motor.
+/// Sandwich `v x ṽ` of a Line `v` and a Rotor `x` -> Motor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
@@ -445,7 +445,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Line x Linẽ` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Line `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Line<T> {
     type Output = Translator<T>;
     #[inline]
@@ -472,7 +472,7 @@ impl<T: Scalar> Sandwich<Translator<T>> for Line<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Point `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
@@ -493,7 +493,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Point `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Point<T> {
     type Output = Line<T>;
     #[inline]
@@ -517,7 +517,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Point `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
@@ -536,7 +536,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Point `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Point<T> {
     type Output = Motor<T>;
     #[inline]
@@ -562,7 +562,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Rotor, result Motor.
+/// Sandwich `v x ṽ` of a Point `v` and a Rotor `x` -> Motor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Point<T> {
     type Output = Motor<T>;
     #[inline]
@@ -585,7 +585,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Point x Point̃` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Point `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Point<T> {
     type Output = Translator<T>;
     #[inline]
@@ -601,7 +601,7 @@ impl<T: Scalar> Sandwich<Translator<T>> for Point<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Motor `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Motor<T> {
     type Output = Plane<T>;
     #[inline]
@@ -655,7 +655,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Motor `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Motor<T> {
     type Output = Line<T>;
     #[inline]
@@ -746,7 +746,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Motor `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Motor<T> {
     type Output = Point<T>;
     #[inline]
@@ -804,7 +804,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Motor `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
@@ -902,7 +902,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Rotor, result Motor.
+/// Sandwich `v x ṽ` of a Motor `v` and a Rotor `x` -> Motor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
@@ -986,7 +986,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Motor x Motor̃` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Motor `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Motor<T> {
     type Output = Translator<T>;
     #[inline]
@@ -1017,7 +1017,7 @@ impl<T: Scalar> Sandwich<Translator<T>> for Motor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
@@ -1048,7 +1048,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Rotor<T> {
     type Output = Line<T>;
     #[inline]
@@ -1087,7 +1087,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Rotor<T> {
     type Output = Point<T>;
     #[inline]
@@ -1118,7 +1118,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
@@ -1159,7 +1159,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Rotor, result Rotor.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Rotor `x` -> Rotor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
@@ -1190,7 +1190,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Rotor x Rotor̃` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Rotor `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Rotor<T> {
     type Output = Translator<T>;
     #[inline]
@@ -1221,7 +1221,7 @@ impl<T: Scalar> Sandwich<Translator<T>> for Rotor<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Plane, result Plane.
+/// Sandwich `v x ṽ` of a Translator `v` and a Plane `x` -> Plane.
 impl<T: Scalar> Sandwich<Plane<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
@@ -1243,7 +1243,7 @@ impl<T: Scalar> Sandwich<Plane<T>> for Translator<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Line, result Line.
+/// Sandwich `v x ṽ` of a Translator `v` and a Line `x` -> Line.
 impl<T: Scalar> Sandwich<Line<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
@@ -1264,7 +1264,7 @@ impl<T: Scalar> Sandwich<Line<T>> for Translator<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Point, result Point.
+/// Sandwich `v x ṽ` of a Translator `v` and a Point `x` -> Point.
 impl<T: Scalar> Sandwich<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
@@ -1283,7 +1283,7 @@ impl<T: Scalar> Sandwich<Point<T>> for Translator<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Motor, result Motor.
+/// Sandwich `v x ṽ` of a Translator `v` and a Motor `x` -> Motor.
 impl<T: Scalar> Sandwich<Motor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
@@ -1306,7 +1306,7 @@ impl<T: Scalar> Sandwich<Motor<T>> for Translator<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Rotor, result Motor.
+/// Sandwich `v x ṽ` of a Translator `v` and a Rotor `x` -> Motor.
 impl<T: Scalar> Sandwich<Rotor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
@@ -1329,7 +1329,7 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Translator<T> {
     }
 }
 
-/// Sandwich `Translator x Translator̃` with `x` a Translator, result Translator.
+/// Sandwich `v x ṽ` of a Translator `v` and a Translator `x` -> Translator.
 impl<T: Scalar> Sandwich<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
