@@ -397,6 +397,50 @@ impl Resolved<'_> {
         out
     }
 
+    /// `+`, `-`, negation, scaling by `T` (both sides for f32 and f64), division by `T`, and
+    /// their assigning forms, component by component.
+    fn linear_ops(&self, t: usize) -> String {
+        let name = self.spec.types[t].name;
+        let each = |f: &dyn Fn(String, String) -> String| -> String {
+            let exprs = self.type_blades[t]
+                .iter()
+                .enumerate()
+                .map(|(pos, &k)| (k, f(self.access("self", t, pos), self.access("b", t, pos))))
+                .collect();
+            self.construct(Some(t), &exprs)
+        };
+        format!(
+            "impl<T: Scalar> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn add(self, b: Self) -> Self {{\n        {add}\n    }}\n}}\n\n\
+             impl<T: Scalar> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn sub(self, b: Self) -> Self {{\n        {sub}\n    }}\n}}\n\n\
+             impl<T: Scalar> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn neg(self) -> Self {{\n        {neg}\n    }}\n}}\n\n\
+             impl<T: Scalar> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn mul(self, k: T) -> Self {{\n        {mul}\n    }}\n}}\n\n\
+             impl<T: Scalar> Div<T> for {name}<T> {{\n    type Output = Self;\n    /// Divides every coefficient by `k` (correctly rounded, like glam's).\n    #[inline]\n    fn div(self, k: T) -> Self {{\n        {div}\n    }}\n}}\n\n\
+             impl<T: Scalar> AddAssign for {name}<T> {{\n    #[inline]\n    fn add_assign(&mut self, b: Self) {{\n        *self = *self + b;\n    }}\n}}\n\n\
+             impl<T: Scalar> SubAssign for {name}<T> {{\n    #[inline]\n    fn sub_assign(&mut self, b: Self) {{\n        *self = *self - b;\n    }}\n}}\n\n\
+             impl<T: Scalar> MulAssign<T> for {name}<T> {{\n    #[inline]\n    fn mul_assign(&mut self, k: T) {{\n        *self = *self * k;\n    }}\n}}\n\n\
+             impl<T: Scalar> DivAssign<T> for {name}<T> {{\n    #[inline]\n    fn div_assign(&mut self, k: T) {{\n        *self = *self / k;\n    }}\n}}\n\n\
+             impl Mul<{name}<f32>> for f32 {{\n    type Output = {name}<f32>;\n    #[inline]\n    fn mul(self, x: {name}<f32>) -> {name}<f32> {{\n        x * self\n    }}\n}}\n\n\
+             impl Mul<{name}<f64>> for f64 {{\n    type Output = {name}<f64>;\n    #[inline]\n    fn mul(self, x: {name}<f64>) -> {name}<f64> {{\n        x * self\n    }}\n}}\n\n",
+            add = each(&|a, b| format!("{a} + {b}")),
+            sub = each(&|a, b| format!("{a} - {b}")),
+            neg = each(&|a, _| format!("-{a}")),
+            mul = each(&|a, _| format!("{a} * k")),
+            div = each(&|a, _| format!("{a} / k")),
+        )
+    }
+
+    /// The linear operations of every type (for algebras whose types are written by hand).
+    fn linear_file(&self) -> String {
+        let mut code = String::new();
+        for t in 0..self.spec.types.len() {
+            code.push_str(&self.linear_ops(t));
+        }
+        format!(
+            "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign}};\n\n{}{code}",
+            self.use_types(&code)
+        )
+    }
+
     /// The types themselves: structs, constants, constructors, arrays, linear operations,
     /// involutions, duals, norms and widening conversions.
     fn types_file(&self) -> String {
@@ -521,30 +565,7 @@ impl Resolved<'_> {
                 sum(squares)
             )
             .expect("w");
-            // Linear operations, component-wise.
-            let each = |f: &dyn Fn(&str) -> String| -> String {
-                fields.iter().map(|x| format!("{x}: {}", f(x))).collect::<Vec<_>>().join(", ")
-            };
-            write!(
-                code,
-                "impl<T: Scalar> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn add(self, b: Self) -> Self {{\n        Self {{ {add} }}\n    }}\n}}\n\n\
-                 impl<T: Scalar> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn sub(self, b: Self) -> Self {{\n        Self {{ {sub} }}\n    }}\n}}\n\n\
-                 impl<T: Scalar> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn neg(self) -> Self {{\n        Self {{ {neg} }}\n    }}\n}}\n\n\
-                 impl<T: Scalar> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn mul(self, k: T) -> Self {{\n        Self {{ {mul} }}\n    }}\n}}\n\n\
-                 impl<T: Scalar> Div<T> for {name}<T> {{\n    type Output = Self;\n    /// Divides every coefficient by `k` (correctly rounded).\n    #[inline]\n    fn div(self, k: T) -> Self {{\n        Self {{ {div} }}\n    }}\n}}\n\n\
-                 impl<T: Scalar> AddAssign for {name}<T> {{\n    #[inline]\n    fn add_assign(&mut self, b: Self) {{\n        *self = *self + b;\n    }}\n}}\n\n\
-                 impl<T: Scalar> SubAssign for {name}<T> {{\n    #[inline]\n    fn sub_assign(&mut self, b: Self) {{\n        *self = *self - b;\n    }}\n}}\n\n\
-                 impl<T: Scalar> MulAssign<T> for {name}<T> {{\n    #[inline]\n    fn mul_assign(&mut self, k: T) {{\n        *self = *self * k;\n    }}\n}}\n\n\
-                 impl<T: Scalar> DivAssign<T> for {name}<T> {{\n    #[inline]\n    fn div_assign(&mut self, k: T) {{\n        *self = *self / k;\n    }}\n}}\n\n\
-                 impl Mul<{name}<f32>> for f32 {{\n    type Output = {name}<f32>;\n    #[inline]\n    fn mul(self, x: {name}<f32>) -> {name}<f32> {{\n        x * self\n    }}\n}}\n\n\
-                 impl Mul<{name}<f64>> for f64 {{\n    type Output = {name}<f64>;\n    #[inline]\n    fn mul(self, x: {name}<f64>) -> {name}<f64> {{\n        x * self\n    }}\n}}\n\n",
-                add = each(&|x| format!("self.{x} + b.{x}")),
-                sub = each(&|x| format!("self.{x} - b.{x}")),
-                neg = each(&|x| format!("-self.{x}")),
-                mul = each(&|x| format!("self.{x} * k")),
-                div = each(&|x| format!("self.{x} / k")),
-            )
-            .expect("w");
+            code.push_str(&self.linear_ops(t));
         }
         // Widening conversions: every type into every type holding all its blades.
         for (s, small) in self.type_blades.iter().enumerate() {
@@ -621,6 +642,17 @@ pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
         "regressive",
         "sandwich",
     ];
+    if !alg.spec.emit_types {
+        files.push((
+            "linear.rs".to_owned(),
+            format!(
+                "//! The linear operations of {title}'s types, component by component.\n\n{}",
+                alg.linear_file()
+            ),
+        ));
+        modules.push("linear");
+        modules.sort_unstable();
+    }
     if alg.spec.emit_types {
         files.push(("types.rs".to_owned(), format!("//! The types of {title}, with their linear operations, involutions, duals and norms.\n\n{}", alg.types_file())));
         modules.push("types");

@@ -125,7 +125,7 @@ impl<T: Scalar> Add for Vector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Vector {
             e1: self.e1 + b.e1,
             e2: self.e2 + b.e2,
             e3: self.e3 + b.e3,
@@ -139,7 +139,7 @@ impl<T: Scalar> Sub for Vector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Vector {
             e1: self.e1 - b.e1,
             e2: self.e2 - b.e2,
             e3: self.e3 - b.e3,
@@ -153,7 +153,7 @@ impl<T: Scalar> Neg for Vector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { e1: -self.e1, e2: -self.e2, e3: -self.e3, e4: -self.e4, e5: -self.e5 }
+        Vector { e1: -self.e1, e2: -self.e2, e3: -self.e3, e4: -self.e4, e5: -self.e5 }
     }
 }
 
@@ -161,16 +161,28 @@ impl<T: Scalar> Mul<T> for Vector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { e1: self.e1 * k, e2: self.e2 * k, e3: self.e3 * k, e4: self.e4 * k, e5: self.e5 * k }
+        Vector {
+            e1: self.e1 * k,
+            e2: self.e2 * k,
+            e3: self.e3 * k,
+            e4: self.e4 * k,
+            e5: self.e5 * k,
+        }
     }
 }
 
 impl<T: Scalar> Div<T> for Vector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { e1: self.e1 / k, e2: self.e2 / k, e3: self.e3 / k, e4: self.e4 / k, e5: self.e5 / k }
+        Vector {
+            e1: self.e1 / k,
+            e2: self.e2 / k,
+            e3: self.e3 / k,
+            e4: self.e4 / k,
+            e5: self.e5 / k,
+        }
     }
 }
 
@@ -541,7 +553,7 @@ impl<T: Scalar> Add for Bivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Bivector {
             e12: self.e12 + b.e12,
             e13: self.e13 + b.e13,
             e14: self.e14 + b.e14,
@@ -560,7 +572,7 @@ impl<T: Scalar> Sub for Bivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Bivector {
             e12: self.e12 - b.e12,
             e13: self.e13 - b.e13,
             e14: self.e14 - b.e14,
@@ -579,7 +591,7 @@ impl<T: Scalar> Neg for Bivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Bivector {
             e12: -self.e12,
             e13: -self.e13,
             e14: -self.e14,
@@ -598,7 +610,7 @@ impl<T: Scalar> Mul<T> for Bivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Bivector {
             e12: self.e12 * k,
             e13: self.e13 * k,
             e14: self.e14 * k,
@@ -615,10 +627,10 @@ impl<T: Scalar> Mul<T> for Bivector<T> {
 
 impl<T: Scalar> Div<T> for Bivector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Bivector {
             e12: self.e12 / k,
             e13: self.e13 / k,
             e14: self.e14 / k,
@@ -1001,7 +1013,7 @@ impl<T: Scalar> Add for Trivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Trivector {
             e123: self.e123 + b.e123,
             e124: self.e124 + b.e124,
             e125: self.e125 + b.e125,
@@ -1020,7 +1032,7 @@ impl<T: Scalar> Sub for Trivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Trivector {
             e123: self.e123 - b.e123,
             e124: self.e124 - b.e124,
             e125: self.e125 - b.e125,
@@ -1039,7 +1051,7 @@ impl<T: Scalar> Neg for Trivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Trivector {
             e123: -self.e123,
             e124: -self.e124,
             e125: -self.e125,
@@ -1058,7 +1070,7 @@ impl<T: Scalar> Mul<T> for Trivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Trivector {
             e123: self.e123 * k,
             e124: self.e124 * k,
             e125: self.e125 * k,
@@ -1075,10 +1087,10 @@ impl<T: Scalar> Mul<T> for Trivector<T> {
 
 impl<T: Scalar> Div<T> for Trivector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Trivector {
             e123: self.e123 / k,
             e124: self.e124 / k,
             e125: self.e125 / k,
@@ -1265,7 +1277,7 @@ impl<T: Scalar> Add for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Quadvector {
             e1234: self.e1234 + b.e1234,
             e1235: self.e1235 + b.e1235,
             e1245: self.e1245 + b.e1245,
@@ -1279,7 +1291,7 @@ impl<T: Scalar> Sub for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Quadvector {
             e1234: self.e1234 - b.e1234,
             e1235: self.e1235 - b.e1235,
             e1245: self.e1245 - b.e1245,
@@ -1293,7 +1305,7 @@ impl<T: Scalar> Neg for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Quadvector {
             e1234: -self.e1234,
             e1235: -self.e1235,
             e1245: -self.e1245,
@@ -1307,7 +1319,7 @@ impl<T: Scalar> Mul<T> for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Quadvector {
             e1234: self.e1234 * k,
             e1235: self.e1235 * k,
             e1245: self.e1245 * k,
@@ -1319,10 +1331,10 @@ impl<T: Scalar> Mul<T> for Quadvector<T> {
 
 impl<T: Scalar> Div<T> for Quadvector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Quadvector {
             e1234: self.e1234 / k,
             e1235: self.e1235 / k,
             e1245: self.e1245 / k,
@@ -1466,7 +1478,7 @@ impl<T: Scalar> Add for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self { e12345: self.e12345 + b.e12345 }
+        Pseudoscalar { e12345: self.e12345 + b.e12345 }
     }
 }
 
@@ -1474,7 +1486,7 @@ impl<T: Scalar> Sub for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self { e12345: self.e12345 - b.e12345 }
+        Pseudoscalar { e12345: self.e12345 - b.e12345 }
     }
 }
 
@@ -1482,7 +1494,7 @@ impl<T: Scalar> Neg for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { e12345: -self.e12345 }
+        Pseudoscalar { e12345: -self.e12345 }
     }
 }
 
@@ -1490,16 +1502,16 @@ impl<T: Scalar> Mul<T> for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { e12345: self.e12345 * k }
+        Pseudoscalar { e12345: self.e12345 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Pseudoscalar<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { e12345: self.e12345 / k }
+        Pseudoscalar { e12345: self.e12345 / k }
     }
 }
 
@@ -1715,7 +1727,7 @@ impl<T: Scalar> Add for Rotor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Rotor {
             s: self.s + b.s,
             e12: self.e12 + b.e12,
             e13: self.e13 + b.e13,
@@ -1728,7 +1740,7 @@ impl<T: Scalar> Sub for Rotor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Rotor {
             s: self.s - b.s,
             e12: self.e12 - b.e12,
             e13: self.e13 - b.e13,
@@ -1741,7 +1753,7 @@ impl<T: Scalar> Neg for Rotor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { s: -self.s, e12: -self.e12, e13: -self.e13, e23: -self.e23 }
+        Rotor { s: -self.s, e12: -self.e12, e13: -self.e13, e23: -self.e23 }
     }
 }
 
@@ -1749,16 +1761,16 @@ impl<T: Scalar> Mul<T> for Rotor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { s: self.s * k, e12: self.e12 * k, e13: self.e13 * k, e23: self.e23 * k }
+        Rotor { s: self.s * k, e12: self.e12 * k, e13: self.e13 * k, e23: self.e23 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Rotor<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { s: self.s / k, e12: self.e12 / k, e13: self.e13 / k, e23: self.e23 / k }
+        Rotor { s: self.s / k, e12: self.e12 / k, e13: self.e13 / k, e23: self.e23 / k }
     }
 }
 
@@ -2415,7 +2427,7 @@ impl<T: Scalar> Add for Motor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Motor {
             s: self.s + b.s,
             e12: self.e12 + b.e12,
             e13: self.e13 + b.e13,
@@ -2440,7 +2452,7 @@ impl<T: Scalar> Sub for Motor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Motor {
             s: self.s - b.s,
             e12: self.e12 - b.e12,
             e13: self.e13 - b.e13,
@@ -2465,7 +2477,7 @@ impl<T: Scalar> Neg for Motor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Motor {
             s: -self.s,
             e12: -self.e12,
             e13: -self.e13,
@@ -2490,7 +2502,7 @@ impl<T: Scalar> Mul<T> for Motor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Motor {
             s: self.s * k,
             e12: self.e12 * k,
             e13: self.e13 * k,
@@ -2513,10 +2525,10 @@ impl<T: Scalar> Mul<T> for Motor<T> {
 
 impl<T: Scalar> Div<T> for Motor<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Motor {
             s: self.s / k,
             e12: self.e12 / k,
             e13: self.e13 / k,
@@ -4184,7 +4196,7 @@ impl<T: Scalar> Add for Multivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Multivector {
             s: self.s + b.s,
             e1: self.e1 + b.e1,
             e2: self.e2 + b.e2,
@@ -4225,7 +4237,7 @@ impl<T: Scalar> Sub for Multivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Multivector {
             s: self.s - b.s,
             e1: self.e1 - b.e1,
             e2: self.e2 - b.e2,
@@ -4266,7 +4278,7 @@ impl<T: Scalar> Neg for Multivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Multivector {
             s: -self.s,
             e1: -self.e1,
             e2: -self.e2,
@@ -4307,7 +4319,7 @@ impl<T: Scalar> Mul<T> for Multivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Multivector {
             s: self.s * k,
             e1: self.e1 * k,
             e2: self.e2 * k,
@@ -4346,10 +4358,10 @@ impl<T: Scalar> Mul<T> for Multivector<T> {
 
 impl<T: Scalar> Div<T> for Multivector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Multivector {
             s: self.s / k,
             e1: self.e1 / k,
             e2: self.e2 / k,

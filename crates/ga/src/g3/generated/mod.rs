@@ -6,6 +6,7 @@ mod commutator;
 mod contractions;
 mod geometric;
 mod inner;
+mod linear;
 mod methods;
 mod outer;
 mod regressive;

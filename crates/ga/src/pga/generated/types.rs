@@ -108,7 +108,7 @@ impl<T: Scalar> Add for Plane<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self { e0: self.e0 + b.e0, e1: self.e1 + b.e1, e2: self.e2 + b.e2, e3: self.e3 + b.e3 }
+        Plane { e0: self.e0 + b.e0, e1: self.e1 + b.e1, e2: self.e2 + b.e2, e3: self.e3 + b.e3 }
     }
 }
 
@@ -116,7 +116,7 @@ impl<T: Scalar> Sub for Plane<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self { e0: self.e0 - b.e0, e1: self.e1 - b.e1, e2: self.e2 - b.e2, e3: self.e3 - b.e3 }
+        Plane { e0: self.e0 - b.e0, e1: self.e1 - b.e1, e2: self.e2 - b.e2, e3: self.e3 - b.e3 }
     }
 }
 
@@ -124,7 +124,7 @@ impl<T: Scalar> Neg for Plane<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { e0: -self.e0, e1: -self.e1, e2: -self.e2, e3: -self.e3 }
+        Plane { e0: -self.e0, e1: -self.e1, e2: -self.e2, e3: -self.e3 }
     }
 }
 
@@ -132,16 +132,16 @@ impl<T: Scalar> Mul<T> for Plane<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { e0: self.e0 * k, e1: self.e1 * k, e2: self.e2 * k, e3: self.e3 * k }
+        Plane { e0: self.e0 * k, e1: self.e1 * k, e2: self.e2 * k, e3: self.e3 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Plane<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { e0: self.e0 / k, e1: self.e1 / k, e2: self.e2 / k, e3: self.e3 / k }
+        Plane { e0: self.e0 / k, e1: self.e1 / k, e2: self.e2 / k, e3: self.e3 / k }
     }
 }
 
@@ -334,7 +334,7 @@ impl<T: Scalar> Add for Line<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Line {
             e01: self.e01 + b.e01,
             e02: self.e02 + b.e02,
             e03: self.e03 + b.e03,
@@ -349,7 +349,7 @@ impl<T: Scalar> Sub for Line<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Line {
             e01: self.e01 - b.e01,
             e02: self.e02 - b.e02,
             e03: self.e03 - b.e03,
@@ -364,7 +364,7 @@ impl<T: Scalar> Neg for Line<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Line {
             e01: -self.e01,
             e02: -self.e02,
             e03: -self.e03,
@@ -379,7 +379,7 @@ impl<T: Scalar> Mul<T> for Line<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Line {
             e01: self.e01 * k,
             e02: self.e02 * k,
             e03: self.e03 * k,
@@ -392,10 +392,10 @@ impl<T: Scalar> Mul<T> for Line<T> {
 
 impl<T: Scalar> Div<T> for Line<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Line {
             e01: self.e01 / k,
             e02: self.e02 / k,
             e03: self.e03 / k,
@@ -552,7 +552,7 @@ impl<T: Scalar> Add for Point<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Point {
             e021: self.e021 + b.e021,
             e013: self.e013 + b.e013,
             e032: self.e032 + b.e032,
@@ -565,7 +565,7 @@ impl<T: Scalar> Sub for Point<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Point {
             e021: self.e021 - b.e021,
             e013: self.e013 - b.e013,
             e032: self.e032 - b.e032,
@@ -578,7 +578,7 @@ impl<T: Scalar> Neg for Point<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { e021: -self.e021, e013: -self.e013, e032: -self.e032, e123: -self.e123 }
+        Point { e021: -self.e021, e013: -self.e013, e032: -self.e032, e123: -self.e123 }
     }
 }
 
@@ -586,16 +586,16 @@ impl<T: Scalar> Mul<T> for Point<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { e021: self.e021 * k, e013: self.e013 * k, e032: self.e032 * k, e123: self.e123 * k }
+        Point { e021: self.e021 * k, e013: self.e013 * k, e032: self.e032 * k, e123: self.e123 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Point<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { e021: self.e021 / k, e013: self.e013 / k, e032: self.e032 / k, e123: self.e123 / k }
+        Point { e021: self.e021 / k, e013: self.e013 / k, e032: self.e032 / k, e123: self.e123 / k }
     }
 }
 
@@ -816,7 +816,7 @@ impl<T: Scalar> Add for Motor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Motor {
             s: self.s + b.s,
             e01: self.e01 + b.e01,
             e02: self.e02 + b.e02,
@@ -833,7 +833,7 @@ impl<T: Scalar> Sub for Motor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Motor {
             s: self.s - b.s,
             e01: self.e01 - b.e01,
             e02: self.e02 - b.e02,
@@ -850,7 +850,7 @@ impl<T: Scalar> Neg for Motor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Motor {
             s: -self.s,
             e01: -self.e01,
             e02: -self.e02,
@@ -867,7 +867,7 @@ impl<T: Scalar> Mul<T> for Motor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Motor {
             s: self.s * k,
             e01: self.e01 * k,
             e02: self.e02 * k,
@@ -882,10 +882,10 @@ impl<T: Scalar> Mul<T> for Motor<T> {
 
 impl<T: Scalar> Div<T> for Motor<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Motor {
             s: self.s / k,
             e01: self.e01 / k,
             e02: self.e02 / k,
@@ -1062,7 +1062,7 @@ impl<T: Scalar> Add for Rotor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Rotor {
             s: self.s + b.s,
             e12: self.e12 + b.e12,
             e31: self.e31 + b.e31,
@@ -1075,7 +1075,7 @@ impl<T: Scalar> Sub for Rotor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Rotor {
             s: self.s - b.s,
             e12: self.e12 - b.e12,
             e31: self.e31 - b.e31,
@@ -1088,7 +1088,7 @@ impl<T: Scalar> Neg for Rotor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { s: -self.s, e12: -self.e12, e31: -self.e31, e23: -self.e23 }
+        Rotor { s: -self.s, e12: -self.e12, e31: -self.e31, e23: -self.e23 }
     }
 }
 
@@ -1096,16 +1096,16 @@ impl<T: Scalar> Mul<T> for Rotor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { s: self.s * k, e12: self.e12 * k, e31: self.e31 * k, e23: self.e23 * k }
+        Rotor { s: self.s * k, e12: self.e12 * k, e31: self.e31 * k, e23: self.e23 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Rotor<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { s: self.s / k, e12: self.e12 / k, e31: self.e31 / k, e23: self.e23 / k }
+        Rotor { s: self.s / k, e12: self.e12 / k, e31: self.e31 / k, e23: self.e23 / k }
     }
 }
 
@@ -1273,7 +1273,7 @@ impl<T: Scalar> Add for Translator<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Translator {
             s: self.s + b.s,
             e01: self.e01 + b.e01,
             e02: self.e02 + b.e02,
@@ -1286,7 +1286,7 @@ impl<T: Scalar> Sub for Translator<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Translator {
             s: self.s - b.s,
             e01: self.e01 - b.e01,
             e02: self.e02 - b.e02,
@@ -1299,7 +1299,7 @@ impl<T: Scalar> Neg for Translator<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { s: -self.s, e01: -self.e01, e02: -self.e02, e03: -self.e03 }
+        Translator { s: -self.s, e01: -self.e01, e02: -self.e02, e03: -self.e03 }
     }
 }
 
@@ -1307,16 +1307,16 @@ impl<T: Scalar> Mul<T> for Translator<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { s: self.s * k, e01: self.e01 * k, e02: self.e02 * k, e03: self.e03 * k }
+        Translator { s: self.s * k, e01: self.e01 * k, e02: self.e02 * k, e03: self.e03 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Translator<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { s: self.s / k, e01: self.e01 / k, e02: self.e02 / k, e03: self.e03 / k }
+        Translator { s: self.s / k, e01: self.e01 / k, e02: self.e02 / k, e03: self.e03 / k }
     }
 }
 
@@ -1454,7 +1454,7 @@ impl<T: Scalar> Add for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self { e0123: self.e0123 + b.e0123 }
+        Pseudoscalar { e0123: self.e0123 + b.e0123 }
     }
 }
 
@@ -1462,7 +1462,7 @@ impl<T: Scalar> Sub for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self { e0123: self.e0123 - b.e0123 }
+        Pseudoscalar { e0123: self.e0123 - b.e0123 }
     }
 }
 
@@ -1470,7 +1470,7 @@ impl<T: Scalar> Neg for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self { e0123: -self.e0123 }
+        Pseudoscalar { e0123: -self.e0123 }
     }
 }
 
@@ -1478,16 +1478,16 @@ impl<T: Scalar> Mul<T> for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self { e0123: self.e0123 * k }
+        Pseudoscalar { e0123: self.e0123 * k }
     }
 }
 
 impl<T: Scalar> Div<T> for Pseudoscalar<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self { e0123: self.e0123 / k }
+        Pseudoscalar { e0123: self.e0123 / k }
     }
 }
 
@@ -2090,7 +2090,7 @@ impl<T: Scalar> Add for Multivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
-        Self {
+        Multivector {
             s: self.s + b.s,
             e0: self.e0 + b.e0,
             e1: self.e1 + b.e1,
@@ -2115,7 +2115,7 @@ impl<T: Scalar> Sub for Multivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
-        Self {
+        Multivector {
             s: self.s - b.s,
             e0: self.e0 - b.e0,
             e1: self.e1 - b.e1,
@@ -2140,7 +2140,7 @@ impl<T: Scalar> Neg for Multivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
-        Self {
+        Multivector {
             s: -self.s,
             e0: -self.e0,
             e1: -self.e1,
@@ -2165,7 +2165,7 @@ impl<T: Scalar> Mul<T> for Multivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
-        Self {
+        Multivector {
             s: self.s * k,
             e0: self.e0 * k,
             e1: self.e1 * k,
@@ -2188,10 +2188,10 @@ impl<T: Scalar> Mul<T> for Multivector<T> {
 
 impl<T: Scalar> Div<T> for Multivector<T> {
     type Output = Self;
-    /// Divides every coefficient by `k` (correctly rounded).
+    /// Divides every coefficient by `k` (correctly rounded, like glam's).
     #[inline]
     fn div(self, k: T) -> Self {
-        Self {
+        Multivector {
             s: self.s / k,
             e0: self.e0 / k,
             e1: self.e1 / k,
