@@ -8,16 +8,7 @@
 //! `ga-codegen` (`g3/generated/geometric.rs`); the tests in `tests/` compare every one against
 //! the generic bitmask algebra of the `ga-reference` crate.
 //!
-//! |  ·   |  1   |  e1  |  e2  |  e3  | e12  | e23  | e31  | e123 |
-//! |------|------|------|------|------|------|------|------|------|
-//! | 1    |   1  |  e1  |  e2  |  e3  |  e12 |  e23 |  e31 | e123 |
-//! | e1   |  e1  |   1  |  e12 | -e31 |  e2  | e123 | -e3  |  e23 |
-//! | e2   |  e2  | -e12 |   1  |  e23 | -e1  |  e3  | e123 |  e31 |
-//! | e3   |  e3  |  e31 | -e23 |   1  | e123 | -e2  |  e1  |  e12 |
-//! | e12  |  e12 | -e2  |  e1  | e123 |  -1  | -e31 |  e23 | -e3  |
-//! | e23  |  e23 | e123 | -e3  |  e2  |  e31 |  -1  | -e12 | -e1  |
-//! | e31  |  e31 |  e3  | e123 | -e1  | -e23 |  e12 |  -1  | -e2  |
-//! | e123 | e123 |  e23 |  e31 |  e12 | -e3  | -e1  | -e2  |  -1  |
+#![doc = include_str!("generated/cayley.md")]
 //!
 //! (Report figure 2.5 prints this table transposed: its entry in row `e1`, column `e2` is
 //! `-e12`, which is `e2 e1`; see [`crate::errata`].)
