@@ -593,6 +593,58 @@ impl Resolved<'_> {
     }
 }
 
+/// For each product, the table of result types: left operand down, right operand across, `T`
+/// for a scalar, `—` where the product is identically zero (no impl).
+fn result_types(alg: &Resolved<'_>, impls: &[Impl]) -> String {
+    let names: Vec<&str> = alg.spec.types.iter().map(|t| t.name).collect();
+    let mut out = String::new();
+    let mut products: Vec<(&str, String)> =
+        PRODUCTS.iter().map(|p| (p.key, format!("{} `a {} b`", p.doc, p.symbol))).collect();
+    products.push(("sandwich", "Sandwich `a.sandwich(b)` (`a b ã`)".to_owned()));
+    for (key, title) in products {
+        let hand = |a: usize, b: usize| {
+            alg.spec
+                .hand_written
+                .iter()
+                .any(|&(p, x, y)| p == key && x == names[a] && y == names[b])
+        };
+        let rows: Vec<usize> = (0..names.len())
+            .filter(|&a| key != "sandwich" || alg.spec.versors.contains(&names[a]))
+            .collect();
+        let cols: Vec<usize> = (0..names.len())
+            .filter(|&b| key != "sandwich" || alg.spec.sandwiched.contains(&names[b]))
+            .collect();
+        let header: Vec<&str> = cols.iter().map(|&b| names[b]).collect();
+        write!(
+            out,
+            "{title}:\n\n| `a` \\ `b` | {} |\n|---|{}\n",
+            header.join(" | "),
+            "---|".repeat(cols.len())
+        )
+        .expect("w");
+        for &a in &rows {
+            let cells: Vec<String> = cols
+                .iter()
+                .map(|&b| {
+                    if hand(a, b) {
+                        // Hand-written beside a SIMD kernel; the result is the operand type.
+                        return names[b].to_owned();
+                    }
+                    impls
+                        .iter()
+                        .find(|i| i.product == key && i.left == a && i.right == b)
+                        .map_or("—".to_owned(), |i| {
+                            i.result.map_or("`T`".to_owned(), |r| names[r].to_owned())
+                        })
+                })
+                .collect();
+            writeln!(out, "| {} | {} |", names[a], cells.join(" | ")).expect("w");
+        }
+        out.push('\n');
+    }
+    out
+}
+
 /// One generated impl.
 pub struct Impl {
     /// The product's key (`"sandwich"` for sandwiches).
@@ -693,6 +745,7 @@ pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
         files[last].1.push_str(&format!("\n{}\n", uses.join("\n")));
     }
     files.push(("cayley.md".to_owned(), alg.cayley()));
+    files.push(("products.md".to_owned(), result_types(alg, &impls)));
     (files, impls)
 }
 

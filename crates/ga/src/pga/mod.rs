@@ -83,6 +83,13 @@
 //! Row times column, `e_row e_col`:
 //!
 #![doc = include_str!("generated/cayley.md")]
+//!
+//! # Result types
+//!
+//! The type each product returns for each pair of types (`T` a scalar, `—` no impl: the
+//! product is identically zero), as generated:
+//!
+#![doc = include_str!("generated/products.md")]
 
 mod generated;
 
