@@ -5,7 +5,7 @@
 //! does instead, so that a reader who follows the report and gets a different answer from
 //! [`crate::g3`] knows which one to trust. Each entry quotes the report, says what is right and
 //! why, and names the test in `crates/ga/tests/` that demonstrates it. The tests compute the
-//! report's version and the corrected version side by side (with [`crate::reference`], the
+//! report's version and the corrected version side by side (with the `ga-reference` crate, the
 //! generic algebra, or with [`crate::g3`]) and assert that they differ as described, so an
 //! entry here cannot silently become untrue.
 //!

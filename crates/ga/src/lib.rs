@@ -1,9 +1,11 @@
 //! Geometric algebra for the wedge ray tracers.
 //!
-//! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade and hand-expanded
-//! products; [`reference`](mod@reference) is a generic (slow, obviously correct) Clifford
-//! algebra the fast kernels are tested against; [`errata`] lists what the report this project
-//! starts from gets wrong and what the code does instead.
+//! [`g3`] is the algebra G(3,0,0) of Euclidean 3D space with a type per grade, [`pga`] the
+//! projective algebra R(3,0,1) and [`cga`] the conformal algebra R(4,1); [`errata`] lists
+//! what the report this project starts from gets wrong and what the code does instead. The
+//! products are written by the `ga-codegen` crate from a table of algebras and checked against
+//! the generic (slow, obviously correct) Clifford algebra of the `ga-reference` crate, which `ga`
+//! itself does not depend on.
 //!
 //! ```
 //! use ga::g3::{Bivector, Multivector, Rotor, Vector};
@@ -25,6 +27,23 @@
 //! let one = m * m.inverse().unwrap();
 //! assert!(one.abs_diff_eq(Multivector::ONE, 1e-15));
 //! assert_eq!(m.to_string(), "1 + 2e1 + 0.5e12 + 3e123");
+//! ```
+//!
+//! The projective and conformal algebras have the same operators (each module states its
+//! basis, metric, dual and Cayley table):
+//!
+//! ```
+//! use ga::{cga, pga};
+//!
+//! // PGA: the planes x = 0 and y = 0 meet (^) in the z axis, which the origin lies on (its
+//! // join & with the origin spans no plane).
+//! let line = pga::Plane::new(0.0, 1.0, 0.0, 0.0) ^ pga::Plane::new(0.0, 0.0, 1.0, 0.0);
+//! assert_eq!(line & pga::Point::new(0.0, 0.0, 0.0, 1.0), pga::Plane::ZERO);
+//!
+//! // CGA: the origin e_o = (e5 - e4)/2 is a null vector, and so is e_inf = e4 + e5.
+//! let origin = cga::Vector::new(0.0, 0.0, 0.0, -0.5, 0.5);
+//! let infinity = cga::Vector::new(0.0, 0.0, 0.0, 1.0, 1.0);
+//! assert_eq!((origin | origin, infinity | infinity, origin | infinity), (0.0, 0.0, -1.0));
 //! ```
 //!
 //! # Conventions
@@ -84,9 +103,11 @@
 
 #![deny(missing_docs)]
 
+pub mod cga;
 pub mod errata;
 pub mod g3;
-pub mod reference;
+pub mod pga;
+pub mod products;
 mod scalar;
 
 /// The workspace's one float trait, which [`Scalar`] extends: re-exported so that code using

@@ -1,4 +1,4 @@
-//! Every specialised G3 kernel against the generic reference algebra (`ga::reference`).
+//! Every specialised G3 kernel against the generic reference algebra (the `ga-reference` crate).
 //!
 //! Each check draws a few thousand random inputs from a fixed seed, runs the hand-expanded
 //! kernel and the textbook definition (a double loop over basis blades), and compares all eight
@@ -14,7 +14,7 @@ use common::{
 };
 use ga::g3::geometry::{Line, Plane, point_in_triangle};
 use ga::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
-use ga::reference::{Algebra, Multivector as Reference};
+use ga_reference::{Algebra, Multivector as Reference};
 use rand::Rng;
 
 const CASES: usize = 2000;

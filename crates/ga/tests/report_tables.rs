@@ -8,7 +8,7 @@
 //! transposed tables. See erratum E1 in `ga::errata`.
 
 use ga::g3::Multivector;
-use ga::reference::{G3_REPORT_NAMES, Multivector as Reference, from_g3_report, to_g3_report};
+use ga_reference::{G3_REPORT_NAMES, Multivector as Reference, from_g3_report, to_g3_report};
 
 /// Figure 2.5, the geometric product, exactly as printed (`s` is the scalar 1).
 const GEOMETRIC: [[&str; 8]; 8] = [

@@ -4,19 +4,11 @@
 //! times column, with `e31 = e3 e1`), keeping only the terms whose blades both types hold, so
 //! no zero grade is ever multiplied. The result is the smallest type holding every grade that
 //! can appear: vector times vector is a [`Rotor`] (scalar plus bivector), vector times bivector
-//! is odd (vector plus trivector) and so a [`Multivector`]. The tests in `tests/` compare every
-//! kernel against the generic bitmask algebra in [`crate::reference`].
+//! is odd (vector plus trivector) and so a [`Multivector`]. The kernels are written by
+//! `ga-codegen` (`g3/generated/geometric.rs`); the tests in `tests/` compare every one against
+//! the generic bitmask algebra of the `ga-reference` crate.
 //!
-//! |  ·   |  1   |  e1  |  e2  |  e3  | e12  | e23  | e31  | e123 |
-//! |------|------|------|------|------|------|------|------|------|
-//! | 1    |   1  |  e1  |  e2  |  e3  |  e12 |  e23 |  e31 | e123 |
-//! | e1   |  e1  |   1  |  e12 | -e31 |  e2  | e123 | -e3  |  e23 |
-//! | e2   |  e2  | -e12 |   1  |  e23 | -e1  |  e3  | e123 |  e31 |
-//! | e3   |  e3  |  e31 | -e23 |   1  | e123 | -e2  |  e1  |  e12 |
-//! | e12  |  e12 | -e2  |  e1  | e123 |  -1  | -e31 |  e23 | -e3  |
-//! | e23  |  e23 | e123 | -e3  |  e2  |  e31 |  -1  | -e12 | -e1  |
-//! | e31  |  e31 |  e3  | e123 | -e1  | -e23 |  e12 |  -1  | -e2  |
-//! | e123 | e123 |  e23 |  e31 |  e12 | -e3  | -e1  | -e2  |  -1  |
+#![doc = include_str!("generated/cayley.md")]
 //!
 //! (Report figure 2.5 prints this table transposed: its entry in row `e1`, column `e2` is
 //! `-e12`, which is `e2 e1`; see [`crate::errata`].)
@@ -39,418 +31,7 @@
 use core::ops::{Mul, MulAssign};
 
 use crate::Scalar;
-use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
-
-/// Geometric product `Vector * Vector -> Rotor`.
-impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
-    type Output = Rotor<T>;
-    #[inline]
-    fn mul(self, b: Vector<T>) -> Rotor<T> {
-        // Blade products: e1 e1 = 1, e1 e2 = e12, e1 e3 = -e31, e2 e1 = -e12, e2 e2 = 1,
-        //   e2 e3 = e23, e3 e1 = e31, e3 e2 = -e23, e3 e3 = 1
-        let a = self;
-        Rotor {
-            s: a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3,
-            e12: a.e1 * b.e2 - a.e2 * b.e1,
-            e23: a.e2 * b.e3 - a.e3 * b.e2,
-            e31: a.e3 * b.e1 - a.e1 * b.e3,
-        }
-    }
-}
-
-/// Geometric product `Vector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Bivector<T>) -> Multivector<T> {
-        // Blade products: e1 e12 = e2, e1 e23 = e123, e1 e31 = -e3, e2 e12 = -e1, e2 e23 = e3,
-        //   e2 e31 = e123, e3 e12 = e123, e3 e23 = -e2, e3 e31 = e1
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            a.e3 * b.e31 - a.e2 * b.e12,
-            a.e1 * b.e12 - a.e3 * b.e23,
-            a.e2 * b.e23 - a.e1 * b.e31,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        )
-    }
-}
-
-/// Geometric product `Vector * Trivector -> Bivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
-    type Output = Bivector<T>;
-    #[inline]
-    fn mul(self, b: Trivector<T>) -> Bivector<T> {
-        // Blade products: e1 e123 = e23, e2 e123 = e31, e3 e123 = e12
-        let a = self;
-        Bivector { e12: a.e3 * b.e123, e23: a.e1 * b.e123, e31: a.e2 * b.e123 }
-    }
-}
-
-/// Geometric product `Vector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Rotor<T>) -> Multivector<T> {
-        // Blade products: e1 s = e1, e1 e12 = e2, e1 e23 = e123, e1 e31 = -e3, e2 s = e2,
-        //   e2 e12 = -e1, e2 e23 = e3, e2 e31 = e123, e3 s = e3, e3 e12 = e123, e3 e23 = -e2,
-        //   e3 e31 = e1
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31,
-            a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23,
-            a.e2 * b.e23 - a.e1 * b.e31 + a.e3 * b.s,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e1 * b.e23 + a.e2 * b.e31 + a.e3 * b.e12,
-        )
-    }
-}
-
-/// Geometric product `Vector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            a.e1 * b.e1() + a.e2 * b.e2() + a.e3 * b.e3(),
-            a.e1 * b.s() - a.e2 * b.e12() + a.e3 * b.e31(),
-            a.e1 * b.e12() + a.e2 * b.s() - a.e3 * b.e23(),
-            a.e2 * b.e23() - a.e1 * b.e31() + a.e3 * b.s(),
-            a.e1 * b.e2() - a.e2 * b.e1() + a.e3 * b.e123(),
-            a.e1 * b.e123() + a.e2 * b.e3() - a.e3 * b.e2(),
-            a.e2 * b.e123() - a.e1 * b.e3() + a.e3 * b.e1(),
-            a.e1 * b.e23() + a.e2 * b.e31() + a.e3 * b.e12(),
-        )
-    }
-}
-
-/// Geometric product `Bivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Vector<T>) -> Multivector<T> {
-        // Blade products: e12 e1 = -e2, e12 e2 = e1, e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3,
-        //   e23 e3 = e2, e31 e1 = e3, e31 e2 = e123, e31 e3 = -e1
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            a.e12 * b.e2 - a.e31 * b.e3,
-            a.e23 * b.e3 - a.e12 * b.e1,
-            a.e31 * b.e1 - a.e23 * b.e2,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        )
-    }
-}
-
-/// Geometric product `Bivector * Bivector -> Rotor`.
-impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
-    type Output = Rotor<T>;
-    #[inline]
-    fn mul(self, b: Bivector<T>) -> Rotor<T> {
-        // Blade products: e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 e12 = e31,
-        //   e23 e23 = -1, e23 e31 = -e12, e31 e12 = -e23, e31 e23 = e12, e31 e31 = -1
-        let a = self;
-        Rotor {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e12: a.e31 * b.e23 - a.e23 * b.e31,
-            e23: a.e12 * b.e31 - a.e31 * b.e12,
-            e31: a.e23 * b.e12 - a.e12 * b.e23,
-        }
-    }
-}
-
-/// Geometric product `Bivector * Trivector -> Vector`.
-impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
-    type Output = Vector<T>;
-    #[inline]
-    fn mul(self, b: Trivector<T>) -> Vector<T> {
-        // Blade products: e12 e123 = -e3, e23 e123 = -e1, e31 e123 = -e2
-        let a = self;
-        Vector { e1: -a.e23 * b.e123, e2: -a.e31 * b.e123, e3: -a.e12 * b.e123 }
-    }
-}
-
-/// Geometric product `Bivector * Rotor -> Rotor`.
-impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
-    type Output = Rotor<T>;
-    #[inline]
-    fn mul(self, b: Rotor<T>) -> Rotor<T> {
-        // Blade products: e12 s = e12, e12 e12 = -1, e12 e23 = -e31, e12 e31 = e23, e23 s = e23,
-        //   e23 e12 = e31, e23 e23 = -1, e23 e31 = -e12, e31 s = e31, e31 e12 = -e23,
-        //   e31 e23 = e12, e31 e31 = -1
-        let a = self;
-        Rotor {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e12: a.e12 * b.s - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.e12 * b.e31 + a.e23 * b.s - a.e31 * b.e12,
-            e31: a.e23 * b.e12 - a.e12 * b.e23 + a.e31 * b.s,
-        }
-    }
-}
-
-/// Geometric product `Bivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            -a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
-            a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
-            a.e23 * b.e3() - a.e12 * b.e1() - a.e31 * b.e123(),
-            a.e31 * b.e1() - a.e12 * b.e123() - a.e23 * b.e2(),
-            a.e12 * b.s() - a.e23 * b.e31() + a.e31 * b.e23(),
-            a.e12 * b.e31() + a.e23 * b.s() - a.e31 * b.e12(),
-            a.e23 * b.e12() - a.e12 * b.e23() + a.e31 * b.s(),
-            a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
-        )
-    }
-}
-
-/// Geometric product `Trivector * Vector -> Bivector`.
-impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
-    type Output = Bivector<T>;
-    #[inline]
-    fn mul(self, b: Vector<T>) -> Bivector<T> {
-        // Blade products: e123 e1 = e23, e123 e2 = e31, e123 e3 = e12
-        let a = self;
-        Bivector { e12: a.e123 * b.e3, e23: a.e123 * b.e1, e31: a.e123 * b.e2 }
-    }
-}
-
-/// Geometric product `Trivector * Bivector -> Vector`.
-impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
-    type Output = Vector<T>;
-    #[inline]
-    fn mul(self, b: Bivector<T>) -> Vector<T> {
-        // Blade products: e123 e12 = -e3, e123 e23 = -e1, e123 e31 = -e2
-        let a = self;
-        Vector { e1: -a.e123 * b.e23, e2: -a.e123 * b.e31, e3: -a.e123 * b.e12 }
-    }
-}
-
-/// Geometric product `Trivector * Trivector -> scalar`.
-impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
-    type Output = T;
-    #[inline]
-    fn mul(self, b: Trivector<T>) -> T {
-        // Blade products: e123 e123 = -1
-        let a = self;
-        -a.e123 * b.e123
-    }
-}
-
-/// Geometric product `Trivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Rotor<T>) -> Multivector<T> {
-        // Blade products: e123 s = e123, e123 e12 = -e3, e123 e23 = -e1, e123 e31 = -e2
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            -a.e123 * b.e23,
-            -a.e123 * b.e31,
-            -a.e123 * b.e12,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e123 * b.s,
-        )
-    }
-}
-
-/// Geometric product `Trivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            -a.e123 * b.e123(),
-            -a.e123 * b.e23(),
-            -a.e123 * b.e31(),
-            -a.e123 * b.e12(),
-            a.e123 * b.e3(),
-            a.e123 * b.e1(),
-            a.e123 * b.e2(),
-            a.e123 * b.s(),
-        )
-    }
-}
-
-/// Geometric product `Rotor * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Vector<T>) -> Multivector<T> {
-        // Blade products: s e1 = e1, s e2 = e2, s e3 = e3, e12 e1 = -e2, e12 e2 = e1,
-        //   e12 e3 = e123, e23 e1 = e123, e23 e2 = -e3, e23 e3 = e2, e31 e1 = e3, e31 e2 = e123,
-        //   e31 e3 = -e1
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            a.s * b.e1 + a.e12 * b.e2 - a.e31 * b.e3,
-            a.s * b.e2 - a.e12 * b.e1 + a.e23 * b.e3,
-            a.s * b.e3 - a.e23 * b.e2 + a.e31 * b.e1,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.e12 * b.e3 + a.e23 * b.e1 + a.e31 * b.e2,
-        )
-    }
-}
-
-/// Geometric product `Rotor * Bivector -> Rotor`.
-impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
-    type Output = Rotor<T>;
-    #[inline]
-    fn mul(self, b: Bivector<T>) -> Rotor<T> {
-        // Blade products: s e12 = e12, s e23 = e23, s e31 = e31, e12 e12 = -1, e12 e23 = -e31,
-        //   e12 e31 = e23, e23 e12 = e31, e23 e23 = -1, e23 e31 = -e12, e31 e12 = -e23,
-        //   e31 e23 = e12, e31 e31 = -1
-        let a = self;
-        Rotor {
-            s: -a.e12 * b.e12 - a.e23 * b.e23 - a.e31 * b.e31,
-            e12: a.s * b.e12 - a.e23 * b.e31 + a.e31 * b.e23,
-            e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e23 * b.e12,
-        }
-    }
-}
-
-/// Geometric product `Rotor * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Trivector<T>) -> Multivector<T> {
-        // Blade products: s e123 = e123, e12 e123 = -e3, e23 e123 = -e1, e31 e123 = -e2
-        let a = self;
-        Multivector::new(
-            T::ZERO,
-            -a.e23 * b.e123,
-            -a.e31 * b.e123,
-            -a.e12 * b.e123,
-            T::ZERO,
-            T::ZERO,
-            T::ZERO,
-            a.s * b.e123,
-        )
-    }
-}
-
-/// Geometric product `Rotor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            a.s * b.s() - a.e12 * b.e12() - a.e23 * b.e23() - a.e31 * b.e31(),
-            a.s * b.e1() + a.e12 * b.e2() - a.e23 * b.e123() - a.e31 * b.e3(),
-            a.s * b.e2() - a.e12 * b.e1() + a.e23 * b.e3() - a.e31 * b.e123(),
-            a.s * b.e3() - a.e12 * b.e123() - a.e23 * b.e2() + a.e31 * b.e1(),
-            a.s * b.e12() + a.e12 * b.s() - a.e23 * b.e31() + a.e31 * b.e23(),
-            a.s * b.e23() + a.e12 * b.e31() + a.e23 * b.s() - a.e31 * b.e12(),
-            a.s * b.e31() - a.e12 * b.e23() + a.e23 * b.e12() + a.e31 * b.s(),
-            a.s * b.e123() + a.e12 * b.e3() + a.e23 * b.e1() + a.e31 * b.e2(),
-        )
-    }
-}
-
-/// Geometric product `Multivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Vector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            a.e1() * b.e1 + a.e2() * b.e2 + a.e3() * b.e3,
-            a.s() * b.e1 + a.e12() * b.e2 - a.e31() * b.e3,
-            a.s() * b.e2 - a.e12() * b.e1 + a.e23() * b.e3,
-            a.s() * b.e3 - a.e23() * b.e2 + a.e31() * b.e1,
-            a.e1() * b.e2 - a.e2() * b.e1 + a.e123() * b.e3,
-            a.e2() * b.e3 - a.e3() * b.e2 + a.e123() * b.e1,
-            a.e3() * b.e1 - a.e1() * b.e3 + a.e123() * b.e2,
-            a.e12() * b.e3 + a.e23() * b.e1 + a.e31() * b.e2,
-        )
-    }
-}
-
-/// Geometric product `Multivector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Bivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            -a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
-            a.e3() * b.e31 - a.e2() * b.e12 - a.e123() * b.e23,
-            a.e1() * b.e12 - a.e3() * b.e23 - a.e123() * b.e31,
-            a.e2() * b.e23 - a.e1() * b.e31 - a.e123() * b.e12,
-            a.s() * b.e12 - a.e23() * b.e31 + a.e31() * b.e23,
-            a.s() * b.e23 + a.e12() * b.e31 - a.e31() * b.e12,
-            a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12,
-            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12,
-        )
-    }
-}
-
-/// Geometric product `Multivector * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Trivector<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            -a.e123() * b.e123,
-            -a.e23() * b.e123,
-            -a.e31() * b.e123,
-            -a.e12() * b.e123,
-            a.e3() * b.e123,
-            a.e1() * b.e123,
-            a.e2() * b.e123,
-            a.s() * b.e123,
-        )
-    }
-}
-
-/// Geometric product `Multivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Rotor<T>) -> Multivector<T> {
-        // The Cayley-table terms (module docs) whose factors both types hold.
-        let a = self;
-        Multivector::new(
-            a.s() * b.s - a.e12() * b.e12 - a.e23() * b.e23 - a.e31() * b.e31,
-            a.e1() * b.s - a.e2() * b.e12 + a.e3() * b.e31 - a.e123() * b.e23,
-            a.e1() * b.e12 + a.e2() * b.s - a.e3() * b.e23 - a.e123() * b.e31,
-            a.e2() * b.e23 - a.e1() * b.e31 + a.e3() * b.s - a.e123() * b.e12,
-            a.s() * b.e12 + a.e12() * b.s - a.e23() * b.e31 + a.e31() * b.e23,
-            a.s() * b.e23 + a.e12() * b.e31 + a.e23() * b.s - a.e31() * b.e12,
-            a.s() * b.e31 - a.e12() * b.e23 + a.e23() * b.e12 + a.e31() * b.s,
-            a.e1() * b.e23 + a.e2() * b.e31 + a.e3() * b.e12 + a.e123() * b.s,
-        )
-    }
-}
+use crate::g3::{Multivector, Rotor};
 
 // The products with SIMD kernels, and the assigning operators.
 
@@ -465,54 +46,14 @@ impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     }
 }
 
-/// The geometric product of two multivectors written out term by term (the Cayley table), for
-/// targets without a SIMD kernel and as its check.
+/// The geometric product of two multivectors written out term by term (the Cayley table, as
+/// `ga-codegen` expands it), for targets without a SIMD kernel and as its check.
 #[inline]
 pub(crate) fn geometric_portable<T: Scalar>(
     a: Multivector<T>,
     b: Multivector<T>,
 ) -> Multivector<T> {
-    Multivector::new(
-        a.s() * b.s() + a.e1() * b.e1() + a.e2() * b.e2() + a.e3() * b.e3()
-            - a.e12() * b.e12()
-            - a.e23() * b.e23()
-            - a.e31() * b.e31()
-            - a.e123() * b.e123(),
-        a.s() * b.e1() + a.e1() * b.s() - a.e2() * b.e12() + a.e3() * b.e31() + a.e12() * b.e2()
-            - a.e23() * b.e123()
-            - a.e31() * b.e3()
-            - a.e123() * b.e23(),
-        a.s() * b.e2() + a.e1() * b.e12() + a.e2() * b.s() - a.e3() * b.e23() - a.e12() * b.e1()
-            + a.e23() * b.e3()
-            - a.e31() * b.e123()
-            - a.e123() * b.e31(),
-        a.s() * b.e3() - a.e1() * b.e31() + a.e2() * b.e23() + a.e3() * b.s()
-            - a.e12() * b.e123()
-            - a.e23() * b.e2()
-            + a.e31() * b.e1()
-            - a.e123() * b.e12(),
-        a.s() * b.e12() + a.e1() * b.e2() - a.e2() * b.e1() + a.e3() * b.e123() + a.e12() * b.s()
-            - a.e23() * b.e31()
-            + a.e31() * b.e23()
-            + a.e123() * b.e3(),
-        a.s() * b.e23() + a.e1() * b.e123() + a.e2() * b.e3() - a.e3() * b.e2()
-            + a.e12() * b.e31()
-            + a.e23() * b.s()
-            - a.e31() * b.e12()
-            + a.e123() * b.e1(),
-        a.s() * b.e31() - a.e1() * b.e3() + a.e2() * b.e123() + a.e3() * b.e1() - a.e12() * b.e23()
-            + a.e23() * b.e12()
-            + a.e31() * b.s()
-            + a.e123() * b.e2(),
-        a.s() * b.e123()
-            + a.e1() * b.e23()
-            + a.e2() * b.e31()
-            + a.e3() * b.e12()
-            + a.e12() * b.e3()
-            + a.e23() * b.e1()
-            + a.e31() * b.e2()
-            + a.e123() * b.s(),
-    )
+    crate::g3::generated::geometric_multivector_multivector(a, b)
 }
 
 /// Geometric product `Rotor * Rotor -> Rotor`: composition of rotations (`(R2 * R1)` applies
@@ -563,5 +104,45 @@ impl<T: Scalar> MulAssign for Multivector<T> {
     #[inline]
     fn mul_assign(&mut self, rhs: Self) {
         *self = *self * rhs;
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::g3::generated::{geometric_multivector_multivector, geometric_rotor_rotor};
+
+    /// A fixed sequence of coefficients in [-2, 2) (an LCG: no dependency, same every run).
+    pub(crate) fn coefficients(seed: u64) -> impl Iterator<Item = f64> {
+        let mut state = seed;
+        core::iter::repeat_with(move || {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0
+        })
+    }
+
+    /// The hand-written rotor kernels (the lane-by-lane FMA form, and the SIMD kernel behind
+    /// `Rotor * Rotor`) against the generated expansion, and the multivector operator against
+    /// its generated form.
+    #[test]
+    fn hand_kernels_match_the_generated_expansions() {
+        let mut x = coefficients(3);
+        for _ in 0..1000 {
+            let a = Rotor::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
+            let b = Rotor::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
+            let want = geometric_rotor_rotor(a, b);
+            assert!(rotor_product_portable(a, b).abs_diff_eq(want, 1e-13), "{a} {b}");
+            assert!((a * b).abs_diff_eq(want, 1e-13), "{a} {b}");
+            let (a32, b32) = (Rotor::from_array(a.to_array().map(|v| v as f32)), {
+                Rotor::from_array(b.to_array().map(|v| v as f32))
+            });
+            let want32 = geometric_rotor_rotor(a32, b32);
+            assert!((a32 * b32).abs_diff_eq(want32, 1e-5), "{a32} {b32}");
+            assert!(rotor_product_portable(a32, b32).abs_diff_eq(want32, 1e-5));
+
+            let m = Multivector::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
+            let n = Multivector::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
+            assert!((m * n).abs_diff_eq(geometric_multivector_multivector(m, n), 1e-13));
+        }
     }
 }

@@ -1,8 +1,8 @@
-//! The vector-space operations every G3 type shares: `+`, `-`, negation, scaling by a scalar,
-//! and formatting in the report's style.
+//! What every G3 type shares beyond its operators: formatting in the report's style and the
+//! component-wise comparisons (`abs_diff_eq`, `is_finite`, `max_abs`).
 //!
-//! These are component-wise on every type, so one small macro writes them; the products, which
-//! differ per pair of types, are written out by hand in their own files.
+//! One small macro writes them from each type's `terms`; the operators (`+`, `-`, negation,
+//! scaling, and every product) are written by `ga-codegen` in `g3/generated/`.
 
 use core::fmt;
 
@@ -51,21 +51,11 @@ pub(crate) fn write_terms<T: Scalar>(
     Ok(())
 }
 
-/// Gives a struct of named scalar fields the component helpers `map`, `zip` and `terms`
-/// (report-order coefficients with blade names), then the operations of [`impl_linear`].
+/// Gives a struct of named scalar fields the helper `terms` (report-order coefficients with
+/// blade names), then the operations of [`impl_linear`].
 macro_rules! impl_fields {
     ($ty:ident { $($field:ident : $blade:literal),+ }) => {
         impl<T: $crate::Scalar> $ty<T> {
-            /// Applies `f` to every component.
-            #[inline(always)]
-            pub(crate) fn map(self, f: impl Fn(T) -> T) -> Self {
-                Self { $($field: f(self.$field)),+ }
-            }
-            /// Combines corresponding components with `f`.
-            #[inline(always)]
-            pub(crate) fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
-                Self { $($field: f(self.$field, other.$field)),+ }
-            }
             /// The components with their blade names, in the report's order.
             #[inline(always)]
             pub(crate) fn terms(self) -> impl IntoIterator<Item = (T, &'static str)> {
@@ -76,85 +66,10 @@ macro_rules! impl_fields {
     };
 }
 
-/// Implements the component-wise operations for a type with the helpers `map`, `zip` and
-/// `terms`: `Add`, `Sub`, `Neg`, `Mul<T>`, `Div<T>`, their assigning forms, `scalar * value`
-/// for `f32` and `f64`, `Display` (report style) and `abs_diff_eq`, `is_finite`, `max_abs`.
+/// Implements, for a type with the helper `terms`, `Display` (report style) and `abs_diff_eq`,
+/// `is_finite`, `max_abs`.
 macro_rules! impl_linear {
     ($ty:ident) => {
-        impl<T: $crate::Scalar> core::ops::Add for $ty<T> {
-            type Output = Self;
-            #[inline]
-            fn add(self, rhs: Self) -> Self {
-                self.zip(rhs, |a, b| a + b)
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::Sub for $ty<T> {
-            type Output = Self;
-            #[inline]
-            fn sub(self, rhs: Self) -> Self {
-                self.zip(rhs, |a, b| a - b)
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::Neg for $ty<T> {
-            type Output = Self;
-            #[inline]
-            fn neg(self) -> Self {
-                self.map(|a| -a)
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::Mul<T> for $ty<T> {
-            type Output = Self;
-            #[inline]
-            fn mul(self, rhs: T) -> Self {
-                self.map(|a| a * rhs)
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::Div<T> for $ty<T> {
-            type Output = Self;
-            /// Divides every component by `rhs` (correctly rounded, like glam's).
-            #[inline]
-            fn div(self, rhs: T) -> Self {
-                self.map(|a| a / rhs)
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::AddAssign for $ty<T> {
-            #[inline]
-            fn add_assign(&mut self, rhs: Self) {
-                *self = *self + rhs;
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::SubAssign for $ty<T> {
-            #[inline]
-            fn sub_assign(&mut self, rhs: Self) {
-                *self = *self - rhs;
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::MulAssign<T> for $ty<T> {
-            #[inline]
-            fn mul_assign(&mut self, rhs: T) {
-                *self = *self * rhs;
-            }
-        }
-        impl<T: $crate::Scalar> core::ops::DivAssign<T> for $ty<T> {
-            #[inline]
-            fn div_assign(&mut self, rhs: T) {
-                *self = *self / rhs;
-            }
-        }
-        impl core::ops::Mul<$ty<f32>> for f32 {
-            type Output = $ty<f32>;
-            #[inline]
-            fn mul(self, rhs: $ty<f32>) -> $ty<f32> {
-                rhs * self
-            }
-        }
-        impl core::ops::Mul<$ty<f64>> for f64 {
-            type Output = $ty<f64>;
-            #[inline]
-            fn mul(self, rhs: $ty<f64>) -> $ty<f64> {
-                rhs * self
-            }
-        }
         impl<T: $crate::Scalar> core::fmt::Display for $ty<T> {
             fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
                 $crate::g3::linear::write_terms(f, self.terms())

@@ -28,16 +28,6 @@ pub struct Multivector<T> {
 pub(crate) const SLOT: [usize; 8] = [0, 1, 2, 4, 3, 6, 5, 7];
 
 impl<T: Scalar> Multivector<T> {
-    /// Applies `f` to every component.
-    #[inline(always)]
-    pub(crate) fn map(self, f: impl Fn(T) -> T) -> Self {
-        Self { c: self.c.map(f) }
-    }
-    /// Combines corresponding components with `f`.
-    #[inline(always)]
-    pub(crate) fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
-        Self { c: core::array::from_fn(|k| f(self.c[k], other.c[k])) }
-    }
     /// [`is_finite`](Multivector::is_finite) without branches: `x - x` is 0 for finite `x`
     /// and NaN otherwise, and a sum with a NaN is NaN.
     #[inline(always)]

@@ -202,16 +202,8 @@ fn rotor_reverse_f32_sse(a: [f32; 4]) -> [f32; 4] {
 #[cfg(test)]
 mod tests {
     use crate::g3::geometric::geometric_portable;
+    use crate::g3::geometric::tests::coefficients;
     use crate::g3::{Multivector, Rotor};
-
-    /// A fixed sequence of coefficients in [-2, 2) (an LCG: no dependency, same every run).
-    fn coefficients(seed: u64) -> impl Iterator<Item = f64> {
-        let mut state = seed;
-        core::iter::repeat_with(move || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0
-        })
-    }
 
     /// `x + y = s + e` exactly (Knuth's two-sum).
     fn two_sum(x: f64, y: f64) -> (f64, f64) {
@@ -238,7 +230,7 @@ mod tests {
     /// storage lane 5 is `e31 = -e13`; each product is split exactly by an FMA.
     #[test]
     fn f64_kernel_is_accurate_coefficient_by_coefficient() {
-        let g3 = crate::reference::Algebra::new(3, 0, 0);
+        let g3 = ga_reference::Algebra::new(3, 0, 0);
         let flip = |l: usize| if l == 5 { -1.0 } else { 1.0 };
         let check = |a: [f64; 8], b: [f64; 8]| {
             let got = super::geometric_f64(&a, &b);

@@ -6,7 +6,7 @@
 #![allow(dead_code)]
 
 use ga::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
-use ga::reference::{Multivector as Reference, from_g3_report, to_g3_report};
+use ga_reference::{Multivector as Reference, from_g3_report, to_g3_report};
 use ga::{Real, Scalar};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;

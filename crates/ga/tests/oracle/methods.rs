@@ -6,7 +6,7 @@ use ga::g3::{
     Bivector, Commutator, LeftContraction, Multivector, RightContraction, Rotor, ScalarProduct,
     Trivector, Vector,
 };
-use ga::reference::Multivector as Reference;
+use ga_reference::Multivector as Reference;
 
 use super::{F32, F64, check_binary, g3, regressive};
 

@@ -1,4 +1,4 @@
-//! Tests of the oracle itself (`ga::reference`), on Euclidean, projective, conformal and
+//! Tests of the oracle itself (the `ga-reference` crate), on Euclidean, projective, conformal and
 //! spacetime signatures.
 //!
 //! A bilinear product is the Clifford product of a metric exactly when (1) it is associative,
@@ -7,7 +7,7 @@
 //! tests therefore pin the geometric product down completely; the other products are then checked
 //! against their textbook formulas in terms of the geometric product.
 
-use ga::reference::{
+use ga_reference::{
     Algebra, G3_REPORT_BASIS, Multivector, blade_name, from_g3_report, grade_of, to_g3_report,
 };
 use rand::{Rng, SeedableRng};
@@ -224,6 +224,23 @@ fn report_inner_product_is_the_contraction_of_the_lower_grade() {
         }
         let (a, b) = (random_grade(algebra, 1, &mut rng), random_grade(algebra, 1, &mut rng));
         assert_close(name, &a.inner(&b), &(&(&a * &b) + &(&b * &a)).scale(0.5));
+    }
+}
+
+/// The "fat dot" is the contraction of the lower grade onto the higher, scalars included: a
+/// scalar on either side scales.
+#[test]
+fn fat_dot_is_the_contraction_of_the_lower_grade_scalars_included() {
+    let mut rng = Pcg64::seed_from_u64(16);
+    for (name, algebra) in algebras() {
+        for r in 0..=algebra.dimension() {
+            for s in 0..=algebra.dimension() {
+                let a = random_grade(algebra, r, &mut rng);
+                let b = random_grade(algebra, s, &mut rng);
+                let want = if r <= s { a.left_contraction(&b) } else { a.right_contraction(&b) };
+                assert_close(&format!("{name} grades {r},{s}"), &a.fat_dot(&b), &want);
+            }
+        }
     }
 }
 

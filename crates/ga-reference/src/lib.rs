@@ -1,4 +1,8 @@
-//! A generic Clifford algebra over `f64`: the oracle the specialised kernels are tested against.
+//! A generic Clifford algebra over `f64`: the oracle the specialised kernels of `ga` are tested
+//! against, and the source of the sign and blade tables `ga-codegen` writes them from.
+//!
+//! The crate has no dependencies and knows nothing of `ga`, so that the generator never depends on
+//! what it writes.
 //!
 //! Nothing here is fast and nothing here is clever. A basis blade is a bitmask (bit `i` set means
 //! generator `e_{i+1}` is a factor, factors in increasing order), a multivector is an array of
@@ -14,7 +18,7 @@
 //! serves G(3,0,0), projective R(3,0,1) and conformal R(4,1).
 //!
 //! ```
-//! use ga::reference::Algebra;
+//! use ga_reference::Algebra;
 //!
 //! let g3 = Algebra::new(3, 0, 0);
 //! let (e1, e2) = (g3.generator(0), g3.generator(1));
@@ -33,7 +37,23 @@
 //! Blades are stored in bitmask order: `1, e1, e2, e12, e3, e13, e23, e123` for three generators.
 //! The report (and `ga::g3`) uses the order `1, e1, e2, e3, e12, e23, e31, e123`, and its `e31`
 //! is `e3 e1 = -e13`. [`G3_REPORT_BASIS`], [`from_g3_report`] and [`to_g3_report`] convert,
-//! signs included.
+//! signs included. Any other basis (another order, other orientations, such as projective
+//! geometric algebra's `e021, e013, e032`) is a list of `(bitmask, sign)` pairs:
+//! [`blade_from_factors`] computes each pair from the blade written as a product of generators,
+//! and [`from_basis`] and [`to_basis`] convert coefficients.
+//!
+//! ```
+//! use ga_reference::{Algebra, blade_from_factors, from_basis, to_basis};
+//!
+//! // e31 = e3 e1 = -e13: bitmask 0b101, sign -1 (generators are 0-based indices).
+//! assert_eq!(blade_from_factors(&[2, 0]), (0b101, -1.0));
+//! let basis = [(0b000, 1.0), (0b101, -1.0)];
+//! let m = from_basis(Algebra::new(3, 0, 0), &basis, &[2.0, 3.0]);
+//! assert_eq!(m.coefficient(0b101), -3.0);
+//! assert_eq!(to_basis(&m, &basis), vec![2.0, 3.0]);
+//! ```
+
+#![deny(missing_docs)]
 
 use std::fmt;
 use std::ops::{Add, BitXor, Mul, Neg, Sub};
@@ -238,6 +258,51 @@ pub fn to_g3_report(m: &Multivector) -> [f64; 8] {
     G3_REPORT_BASIS.map(|(blade, sign)| sign * m.coefficients[blade])
 }
 
+/// The canonical blade and sign of the product of distinct generators in the given order
+/// (0-based indices): `e_f0 e_f1 ... = sign * e_bitmask`, e.g. `[2, 0]` (`e3 e1`) is
+/// `(0b101, -1.0)`.
+///
+/// # Panics
+///
+/// If a generator repeats or an index is at least [`MAX_GENERATORS`].
+#[must_use]
+pub fn blade_from_factors(factors: &[usize]) -> (usize, f64) {
+    let mut blade = 0;
+    let mut sign = 1.0;
+    for &f in factors {
+        assert!(f < MAX_GENERATORS, "generator {f} beyond {MAX_GENERATORS}");
+        assert!(blade & (1 << f) == 0, "generator {f} repeats in {factors:?}");
+        sign *= reordering_sign(blade, 1 << f);
+        blade |= 1 << f;
+    }
+    (blade, sign)
+}
+
+/// The multivector of `algebra` whose coefficient on the `k`-th blade of `basis` is
+/// `coefficients[k]`, where basis blade `k` is `basis[k].1` times the canonical blade
+/// `basis[k].0`.
+///
+/// # Panics
+///
+/// If the lengths differ or a blade lies outside the algebra.
+#[must_use]
+pub fn from_basis(algebra: Algebra, basis: &[(usize, f64)], coefficients: &[f64]) -> Multivector {
+    assert_eq!(basis.len(), coefficients.len(), "one coefficient per basis blade");
+    let mut m = algebra.zero();
+    for (&(blade, sign), &value) in basis.iter().zip(coefficients) {
+        assert!(blade < algebra.blade_count(), "blade {blade:#b} outside the algebra");
+        m.coefficients[blade] += sign * value;
+    }
+    m
+}
+
+/// The coefficients of `m` on the blades of `basis` (see [`from_basis`]); blades the basis does
+/// not list are dropped.
+#[must_use]
+pub fn to_basis(m: &Multivector, basis: &[(usize, f64)]) -> Vec<f64> {
+    basis.iter().map(|&(blade, sign)| sign * m.coefficients[blade]).collect()
+}
+
 /// An element of an [`Algebra`]: one `f64` per basis blade, in bitmask order.
 #[derive(Clone, PartialEq)]
 pub struct Multivector {
@@ -343,6 +408,14 @@ impl Multivector {
     #[must_use]
     pub fn inner(&self, other: &Self) -> Self {
         self.filtered_product(other, |r, s, t| r != 0 && s != 0 && t == r.abs_diff(s))
+    }
+
+    /// The "fat dot" product (Dorst's dot, the inner product of projective geometric algebra as
+    /// bivector.net and Klein use it): the grade `|r - s|` part of each blade product, scalars
+    /// included (so `1 . B = B`, unlike [`Multivector::inner`]).
+    #[must_use]
+    pub fn fat_dot(&self, other: &Self) -> Self {
+        self.filtered_product(other, |r, s, t| t == r.abs_diff(s))
     }
 
     /// The scalar product `<A B>_0`.
