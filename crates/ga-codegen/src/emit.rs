@@ -265,7 +265,8 @@ impl Resolved<'_> {
                             code,
                             "/// {doc} The expansion the hand-written kernel is checked against.\n\
                              #[cfg_attr(not(test), allow(dead_code))]\n#[inline]\n\
-                             pub(crate) fn {name}<T: Scalar>(a: {a}, b: {b}) -> {out} {{\n{expr}\n}}\n\n"
+                             pub(crate) fn {name}<T: Scalar>(a: {a}, b: {b}) -> {out} {{\n\
+                             {expr}\n}}\n\n"
                         )
                         .expect("writing to a String");
                         continue;
@@ -275,8 +276,10 @@ impl Resolved<'_> {
                     }
                     write!(
                         code,
-                        "/// {doc}\nimpl<T: Scalar> {tr}<{b}> for {a} {{\n    type Output = {out};\n    \
-                         #[inline]\n    fn {m}(self, b: {b}) -> {out} {{\n        let a = self;\n        {expr}\n    }}\n}}\n\n",
+                        "/// {doc}\nimpl<T: Scalar> {tr}<{b}> for {a} {{\n\
+                            type Output = {out};\n    \
+                         #[inline]\n    fn {m}(self, b: {b}) -> {out} {{\n\
+                         let a = self;\n        {expr}\n    }}\n}}\n\n",
                         tr = p.trait_name,
                         m = p.method
                     )
@@ -330,8 +333,11 @@ impl Resolved<'_> {
                     (self.rust_type(Some(tv)), self.rust_type(Some(tx)), self.rust_type(ty));
                 write!(
                     code,
-                    "/// Sandwich `v x ṽ` of a {v} `v` and a {x} `x` -> {o}.\nimpl<T: Scalar> Sandwich<{xt}> for {vt} {{\n    \
-                     type Output = {out};\n    #[inline]\n    fn sandwich(self, x: {xt}) -> {out} {{\n        let a = self;\n        {body}\n    }}\n}}\n\n",
+                    "/// Sandwich `v x ṽ` of a {v} `v` and a {x} `x` -> {o}.\n\
+                        impl<T: Scalar> Sandwich<{xt}> for {vt} {{\n    \
+                     type Output = {out};\n    #[inline]\n\
+                     fn sandwich(self, x: {xt}) -> {out} {{\n        let a = self;\n\
+                     {body}\n    }}\n}}\n\n",
                     o = self.doc_type(ty)
                 )
                 .expect("writing to a String");
@@ -363,9 +369,13 @@ impl Resolved<'_> {
                 }
                 write!(
                     body,
-                    "/// {doc}\n///\n/// Defined for the right-hand types that [`{tr}`] is implemented for, with the \
-                     smallest result type; this inherent form needs no import of the trait.\n#[must_use]\n#[inline]\n\
-                     pub fn {method}<B>(self, b: B) -> <Self as {tr}<B>>::Output where Self: {tr}<B> {{\n    {tr}::{method}(self, b)\n}}\n\n"
+                    "/// {doc}\n///\n\
+                        /// Defined for the right-hand types that [`{tr}`] is implemented for, \
+                        with the \
+                     smallest result type; this inherent form needs no import of the trait.\n\
+                     #[must_use]\n#[inline]\n\
+                     pub fn {method}<B>(self, b: B) -> <Self as {tr}<B>>::Output where Self: \
+                     {tr}<B> {{\n    {tr}::{method}(self, b)\n}}\n\n"
                 )
                 .expect("writing to a String");
             }
@@ -410,17 +420,29 @@ impl Resolved<'_> {
             self.construct(Some(t), &exprs)
         };
         format!(
-            "impl<T: Scalar> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn add(self, b: Self) -> Self {{\n        {add}\n    }}\n}}\n\n\
-             impl<T: Scalar> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn sub(self, b: Self) -> Self {{\n        {sub}\n    }}\n}}\n\n\
-             impl<T: Scalar> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn neg(self) -> Self {{\n        {neg}\n    }}\n}}\n\n\
-             impl<T: Scalar> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n    fn mul(self, k: T) -> Self {{\n        {mul}\n    }}\n}}\n\n\
-             impl<T: Scalar> Div<T> for {name}<T> {{\n    type Output = Self;\n    /// Divides every coefficient by `k` (correctly rounded, like glam's).\n    #[inline]\n    fn div(self, k: T) -> Self {{\n        {div}\n    }}\n}}\n\n\
-             impl<T: Scalar> AddAssign for {name}<T> {{\n    #[inline]\n    fn add_assign(&mut self, b: Self) {{\n        *self = *self + b;\n    }}\n}}\n\n\
-             impl<T: Scalar> SubAssign for {name}<T> {{\n    #[inline]\n    fn sub_assign(&mut self, b: Self) {{\n        *self = *self - b;\n    }}\n}}\n\n\
-             impl<T: Scalar> MulAssign<T> for {name}<T> {{\n    #[inline]\n    fn mul_assign(&mut self, k: T) {{\n        *self = *self * k;\n    }}\n}}\n\n\
-             impl<T: Scalar> DivAssign<T> for {name}<T> {{\n    #[inline]\n    fn div_assign(&mut self, k: T) {{\n        *self = *self / k;\n    }}\n}}\n\n\
-             impl Mul<{name}<f32>> for f32 {{\n    type Output = {name}<f32>;\n    #[inline]\n    fn mul(self, x: {name}<f32>) -> {name}<f32> {{\n        x * self\n    }}\n}}\n\n\
-             impl Mul<{name}<f64>> for f64 {{\n    type Output = {name}<f64>;\n    #[inline]\n    fn mul(self, x: {name}<f64>) -> {name}<f64> {{\n        x * self\n    }}\n}}\n\n",
+            "impl<T: Scalar> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+                fn add(self, b: Self) -> Self {{\n        {add}\n    }}\n}}\n\n\
+             impl<T: Scalar> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             fn sub(self, b: Self) -> Self {{\n        {sub}\n    }}\n}}\n\n\
+             impl<T: Scalar> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             fn neg(self) -> Self {{\n        {neg}\n    }}\n}}\n\n\
+             impl<T: Scalar> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             fn mul(self, k: T) -> Self {{\n        {mul}\n    }}\n}}\n\n\
+             impl<T: Scalar> Div<T> for {name}<T> {{\n    type Output = Self;\n\
+             /// Divides every coefficient by `k` (correctly rounded, like glam's).\n\
+             #[inline]\n    fn div(self, k: T) -> Self {{\n        {div}\n    }}\n}}\n\n\
+             impl<T: Scalar> AddAssign for {name}<T> {{\n    #[inline]\n\
+             fn add_assign(&mut self, b: Self) {{\n        *self = *self + b;\n    }}\n}}\n\n\
+             impl<T: Scalar> SubAssign for {name}<T> {{\n    #[inline]\n\
+             fn sub_assign(&mut self, b: Self) {{\n        *self = *self - b;\n    }}\n}}\n\n\
+             impl<T: Scalar> MulAssign<T> for {name}<T> {{\n    #[inline]\n\
+             fn mul_assign(&mut self, k: T) {{\n        *self = *self * k;\n    }}\n}}\n\n\
+             impl<T: Scalar> DivAssign<T> for {name}<T> {{\n    #[inline]\n\
+             fn div_assign(&mut self, k: T) {{\n        *self = *self / k;\n    }}\n}}\n\n\
+             impl Mul<{name}<f32>> for f32 {{\n    type Output = {name}<f32>;\n    #[inline]\n\
+             fn mul(self, x: {name}<f32>) -> {name}<f32> {{\n        x * self\n    }}\n}}\n\n\
+             impl Mul<{name}<f64>> for f64 {{\n    type Output = {name}<f64>;\n    #[inline]\n\
+             fn mul(self, x: {name}<f64>) -> {name}<f64> {{\n        x * self\n    }}\n}}\n\n",
             add = each(&|a, b| format!("{a} + {b}")),
             sub = each(&|a, b| format!("{a} - {b}")),
             neg = each(&|a, _| format!("-{a}")),
@@ -436,7 +458,8 @@ impl Resolved<'_> {
             code.push_str(&self.linear_ops(t));
         }
         format!(
-            "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign}};\n\n{}{code}",
+            "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, \
+                SubAssign}};\n\n{}{code}",
             self.use_types(&code)
         )
     }
@@ -455,7 +478,8 @@ impl Resolved<'_> {
                 blades.iter().map(|&k| format!("`{}`", self.blades[k].name)).collect();
             write!(
                 code,
-                "/// {}\n///\n/// Blades {}.\n#[derive(Clone, Copy, Debug, Default, PartialEq)]\npub struct {name}<T> {{\n",
+                "/// {}\n///\n/// Blades {}.\n\
+                    #[derive(Clone, Copy, Debug, Default, PartialEq)]\npub struct {name}<T> {{\n",
                 spec.doc,
                 blade_list.join(", ")
             )
@@ -474,7 +498,12 @@ impl Resolved<'_> {
             let params: Vec<String> = fields.iter().map(|f| format!("{f}: T")).collect();
             let selfs: Vec<String> = fields.iter().map(|f| format!("self.{f}")).collect();
             let idx: Vec<String> = (0..n).map(|i| format!("a[{i}]")).collect();
-            write!(code, "impl<T: Scalar> {name}<T> {{\n    /// Zero.\n    pub const ZERO: Self = Self::new({zeros});\n").expect("w");
+            write!(
+                code,
+                "impl<T: Scalar> {name}<T> {{\n    /// Zero.\n\
+                pub const ZERO: Self = Self::new({zeros});\n"
+            )
+            .expect("w");
             for (pos, &k) in blades.iter().enumerate() {
                 let b = &self.blades[k];
                 let args: Vec<&str> =
@@ -494,9 +523,14 @@ impl Resolved<'_> {
             let allow = if n > 7 { "    #[allow(clippy::too_many_arguments)]\n" } else { "" };
             write!(
                 code,
-                "\n    /// From the coefficients of {list}.\n{allow}    #[must_use]\n    #[inline]\n    pub const fn new({p}) -> Self {{\n        Self {{ {f} }}\n    }}\n\n\
-                 \x20   /// From `[{fl}]`.\n    #[must_use]\n    #[inline]\n    pub const fn from_array(a: [T; {n}]) -> Self {{\n        Self::new({i})\n    }}\n\n\
-                 \x20   /// As `[{fl}]`.\n    #[must_use]\n    #[inline]\n    pub const fn to_array(self) -> [T; {n}] {{\n        [{s}]\n    }}\n\n",
+                "\n    /// From the coefficients of {list}.\n{allow}    #[must_use]\n\
+                    #[inline]\n    pub const fn new({p}) -> Self {{\n        Self {{ {f} }}\n\
+                    }}\n\n\
+                 \x20   /// From `[{fl}]`.\n    #[must_use]\n    #[inline]\n\
+                 pub const fn from_array(a: [T; {n}]) -> Self {{\n        Self::new({i})\n\
+                 }}\n\n\
+                 \x20   /// As `[{fl}]`.\n    #[must_use]\n    #[inline]\n\
+                 pub const fn to_array(self) -> [T; {n}] {{\n        [{s}]\n    }}\n\n",
                 list = blade_list.join(", "),
                 p = params.join(", "),
                 f = fields.join(", "),
@@ -527,7 +561,13 @@ impl Resolved<'_> {
                         }
                     })
                     .collect();
-                write!(code, "    /// {doc}\n    #[must_use]\n    #[inline]\n    pub fn {method}(self) -> Self {{\n        Self {{ {} }}\n    }}\n\n", parts.join(", ")).expect("w");
+                write!(
+                    code,
+                    "    /// {doc}\n    #[must_use]\n    #[inline]\n\
+                    pub fn {method}(self) -> Self {{\n        Self {{ {} }}\n    }}\n\n",
+                    parts.join(", ")
+                )
+                .expect("w");
             }
             for (method, undual) in [("dual", false), ("undual", true)] {
                 let mut exprs = BTreeMap::new();
@@ -542,7 +582,8 @@ impl Resolved<'_> {
                 let doc = if undual { "The undual, the inverse of `dual`" } else { "The dual" };
                 write!(
                     code,
-                    "    /// {doc} (see the module docs for its definition).\n    #[must_use]\n    #[inline]\n    pub fn {method}(self) -> {} {{\n        {}\n    }}\n\n",
+                    "    /// {doc} (see the module docs for its definition).\n    #[must_use]\n\
+                        #[inline]\n    pub fn {method}(self) -> {} {{\n        {}\n    }}\n\n",
                     self.rust_type(ty),
                     self.construct(ty, &exprs)
                 )
@@ -560,8 +601,12 @@ impl Resolved<'_> {
                 .collect();
             write!(
                 code,
-                "    /// `⟨A Ã⟩₀`, the squared norm (blades that square to zero do not count).\n    #[must_use]\n    #[inline]\n    pub fn norm_squared(self) -> T {{\n        {}\n    }}\n\n\
-                 \x20   /// `sqrt(|⟨A Ã⟩₀|)`.\n    #[must_use]\n    #[inline]\n    pub fn norm(self) -> T {{\n        self.norm_squared().abs().sqrt()\n    }}\n}}\n\n",
+                "    /// `⟨A Ã⟩₀`, the squared norm (blades that square to zero do not count).\n\
+                    #[must_use]\n    #[inline]\n    pub fn norm_squared(self) -> T {{\n\
+                    {}\n    }}\n\n\
+                 \x20   /// `sqrt(|⟨A Ã⟩₀|)`.\n    #[must_use]\n    #[inline]\n\
+                 pub fn norm(self) -> T {{\n        self.norm_squared().abs().sqrt()\n    }}\n\
+                 }}\n\n",
                 sum(squares)
             )
             .expect("w");
@@ -581,14 +626,17 @@ impl Resolved<'_> {
                 let (sn, bn) = (self.spec.types[s].name, self.spec.types[b].name);
                 write!(
                     code,
-                    "/// Widening: the blades `{bn}` has and `{sn}` lacks are zero.\nimpl<T: Scalar> From<{sn}<T>> for {bn}<T> {{\n    #[inline]\n    fn from(x: {sn}<T>) -> Self {{\n        {}\n    }}\n}}\n\n",
+                    "/// Widening: the blades `{bn}` has and `{sn}` lacks are zero.\n\
+                        impl<T: Scalar> From<{sn}<T>> for {bn}<T> {{\n    #[inline]\n\
+                        fn from(x: {sn}<T>) -> Self {{\n        {}\n    }}\n}}\n\n",
                     self.construct(Some(b), &exprs)
                 )
                 .expect("w");
             }
         }
         format!(
-            "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign}};\n\nuse crate::Scalar;\n\n{code}"
+            "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, \
+                SubAssign}};\n\nuse crate::Scalar;\n\n{code}"
         )
     }
 }
@@ -662,7 +710,8 @@ pub struct Impl {
 pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
     let mut impls = Vec::new();
     let mut files = Vec::new();
-    let lint = "// The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel is a sum of\n\
+    let lint = "// The operator traits name the product (`Mul`, `BitXor`, ...) but each kernel \
+        is a sum of\n\
                 // products of coefficients, which is what clippy's heuristic flags.\n\
                 #![allow(clippy::suspicious_arithmetic_impl)]\n\n";
     let title = alg.spec.title;
@@ -677,13 +726,29 @@ pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
         let body = alg.product_file(file, &mut impls);
         files.push((
             format!("{file}.rs"),
-            format!("//! {what} of {title}, for every pair of types where it is not identically zero.\n\n{lint}{body}"),
+            format!(
+                "//! {what} of {title}, for every pair of types where it is not \
+                identically zero.\n\n{lint}{body}"
+            ),
         ));
     }
     let body = alg.sandwich_file(&mut impls);
-    files.push(("sandwich.rs".to_owned(), format!("//! The sandwich `v x ṽ` of {title}: each versor type applied to each type, keeping only the\n//! grades of `x` (the other grades cancel when `v` is a versor).\n\n{body}")));
+    files.push((
+        "sandwich.rs".to_owned(),
+        format!(
+            "//! The sandwich `v x ṽ` of {title}: each \
+        versor type applied to each type, keeping only the\n//! grades of `x` (the other \
+        grades cancel when `v` is a versor).\n\n{body}"
+        ),
+    ));
     let body = alg.inherent_file(&impls);
-    files.push(("methods.rs".to_owned(), format!("//! The product methods of {title} as inherent methods generic over the right-hand side.\n\n{body}")));
+    files.push((
+        "methods.rs".to_owned(),
+        format!(
+            "//! The product methods of {title} as \
+        inherent methods generic over the right-hand side.\n\n{body}"
+        ),
+    ));
     let mut modules = vec![
         "commutator",
         "contractions",
@@ -706,7 +771,14 @@ pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
         modules.sort_unstable();
     }
     if alg.spec.emit_types {
-        files.push(("types.rs".to_owned(), format!("//! The types of {title}, with their linear operations, involutions, duals and norms.\n\n{}", alg.types_file())));
+        files.push((
+            "types.rs".to_owned(),
+            format!(
+                "//! The types of {title}, with their \
+            linear operations, involutions, duals and norms.\n\n{}",
+                alg.types_file()
+            ),
+        ));
         modules.push("types");
         modules.sort_unstable();
     }

@@ -10,11 +10,12 @@ use crate::model::{Dual, Inner, Regressive, Resolved, Storage};
 pub const PATH: &str = "crates/ga/tests/generated_kernels.rs";
 
 /// The helpers every algebra's checks share.
-const PRELUDE: &str = r#"//! Every generated kernel of every algebra in `crates/ga-codegen`'s table against the reference
-//! algebra (`ga-reference`): random f64 inputs from fixed seeds, every coefficient within a
-//! relative error of 1e-12 of the product of the inputs' norms, and every blade the result type
-//! drops zero in the reference. Then algebra laws as properties: associativity of `*`, the
-//! reverse of a product, and `a ^ b` as the grade `r + s` part of `a * b`.
+const PRELUDE: &str = r#"//! Every generated kernel of every algebra in the table of
+//! `crates/ga-codegen` against the reference algebra (`ga-reference`): random f64 inputs from
+//! fixed seeds, every coefficient within a relative error of 1e-12 of the product of the
+//! inputs' norms, and every blade the result type drops zero in the reference. Then algebra
+//! laws as properties: associativity of `*`, the reverse of a product, and `a ^ b` as the
+//! grade `r + s` part of `a * b`.
 
 use ga_reference::{Algebra, Multivector as Reference, from_basis, grade_of, to_basis};
 use rand::{Rng, SeedableRng};
@@ -69,7 +70,14 @@ fn norm<A: Blades>(x: A) -> f64 {
 
 /// `got` against the reference value on every blade of the algebra.
 #[track_caller]
-fn compare<C: Blades>(basis: &Basis, name: &str, case: usize, got: C, want: &Reference, scale: f64) {
+fn compare<C: Blades>(
+    basis: &Basis,
+    name: &str,
+    case: usize,
+    got: C,
+    want: &Reference,
+    scale: f64,
+) {
     let got_c = got.coefficients();
     for (k, w) in to_basis(want, basis.blades).into_iter().enumerate() {
         let g = C::BLADES.iter().position(|&b| b == k).map_or(0.0, |p| got_c[p]);
@@ -214,7 +222,8 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
             out,
             "\nmod {name} {{\n    use super::*;\n    use ga::{name}::{{{}}};\n\n    \
              const BLADES: [(usize, f64); {}] = [{}];\n\n    \
-             fn basis() -> Basis {{\n        Basis {{ algebra: Algebra::from_metric(&[{}]), blades: &BLADES }}\n    }}\n\n",
+             fn basis() -> Basis {{\n\
+             Basis {{ algebra: Algebra::from_metric(&[{}]), blades: &BLADES }}\n    }}\n\n",
             types.join(", "),
             blades.len(),
             blades.join(", "),
@@ -240,9 +249,11 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
             };
             write!(
                 out,
-                "    impl Blades for {ty}<f64> {{\n        const BLADES: &'static [usize] = &[{}];\n        \
+                "    impl Blades for {ty}<f64> {{\n\
+                    const BLADES: &'static [usize] = &[{}];\n        \
                  fn coefficients(self) -> Vec<f64> {{\n            {get}\n        }}\n        \
-                 fn from_coefficients(c: &[f64]) -> Self {{\n            {make}\n        }}\n    }}\n\n",
+                 fn from_coefficients(c: &[f64]) -> Self {{\n            {make}\n        }}\n\
+                 }}\n\n",
                 idx.join(", "),
                 ty = spec.name
             )
@@ -283,7 +294,8 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
                 if *product == "sandwich" {
                     writeln!(
                         out,
-                        "        sandwich::<{}, {}, {}>(&basis, \"{label}\", |v, x| v.sandwich(x));",
+                        "        sandwich::<{}, {}, {}>(&basis, \"{label}\", |v, x| \
+                            v.sandwich(x));",
                         ty(Some(i.left)),
                         ty(Some(i.right)),
                         ty(i.result)
@@ -326,7 +338,8 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
             }
             writeln!(
                 out,
-                "        outer_is_graded_geometric::<{}, {}, _, _>(&basis, \"{name} {} ^ {}\", {}, |a, b| a ^ b, |a, b| a * b);",
+                "        outer_is_graded_geometric::<{}, {}, _, _>(&basis, \"{name} {} ^ {}\", \
+                    {}, |a, b| a ^ b, |a, b| a * b);",
                 ty(Some(i.left)),
                 ty(Some(i.right)),
                 types[i.left],
@@ -357,7 +370,8 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
                 ] {
                     writeln!(
                         out,
-                        "        unary::<{t}<f64>, _>(&basis, \"{name} {t}::{method}\", |a| a.{method}(), {reference});"
+                        "        unary::<{t}<f64>, _>(&basis, \"{name} {t}::{method}\", |a| \
+                            a.{method}(), {reference});"
                     )
                     .expect("w");
                 }

@@ -23,8 +23,8 @@ pub trait LeftContraction<Rhs> {
 /// The right contraction `a ⌊ b`: for an `r`-blade `a` and an `s`-blade `b`, the grade `r - s`
 /// part of `a b`, zero when `s > r`.
 ///
-/// A scalar on the right scales (`a ⌊ λ = λ a`). [`crate::g3::contraction`] lists the pairs of G3 and
-/// their result types.
+/// A scalar on the right scales (`a ⌊ λ = λ a`). [`crate::g3::contraction`] lists the pairs
+/// of G3 and their result types.
 pub trait RightContraction<Rhs> {
     /// The smallest type that holds the result.
     type Output;
@@ -35,7 +35,8 @@ pub trait RightContraction<Rhs> {
 
 /// The scalar product `a ∗ b = ⟨a b⟩₀`, the scalar part of the geometric product.
 ///
-/// Only equal grades contribute, and `a ∗ b = b ∗ a`. [`crate::g3::contraction`] lists the pairs of G3.
+/// Only equal grades contribute, and `a ∗ b = b ∗ a`. [`crate::g3::contraction`] lists the
+/// pairs of G3.
 pub trait ScalarProduct<Rhs> {
     /// The scalar type `T`.
     type Output;

@@ -1,8 +1,9 @@
 //! The regressive product (meet) `&` between the G3 types where it is not identically zero.
 //!
 //! Defined through the dual: `a & b = ((a I⁻¹) ^ (b I⁻¹)) I`, i.e. `undual(dual(a) ^ dual(b))`
-//! with `dual(x) = x I⁻¹` and `undual(x) = x I` (see [`Multivector::dual`](crate::g3::Multivector::dual)). It is the outer
-//! product of the complements: two planes meet in a line (bivector & bivector is a vector), a
+//! with `dual(x) = x I⁻¹` and `undual(x) = x I` (see
+//! [`Multivector::dual`](crate::g3::Multivector::dual)). It is the outer product of the
+//! complements: two planes meet in a line (bivector & bivector is a vector), a
 //! plane and a line in a point (bivector & vector is a scalar), and the pseudoscalar `I` is
 //! its identity (`I & x = x`). For example `e12 & e23 = -e2` and `e12 & e3 = 1`. Pairs whose
 //! meet always vanishes in 3D (vector & vector) have no operator.

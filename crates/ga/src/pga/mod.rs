@@ -34,14 +34,16 @@
 //!
 //! | type | blades | meaning |
 //! |------|--------|---------|
-//! | [`Plane`] | `e0, e1, e2, e3` | `a e1 + b e2 + c e3 + d e0` is the plane `a x + b y + c z + d = 0` |
+//! | [`Plane`] | `e0, e1, e2, e3` | `a e1 + b e2 + c e3 + d e0`: the plane `ax + by + cz + d = 0` |
 //! | [`Line`] | `e01, e02, e03, e12, e31, e23` | the meet of two planes, the join of two points |
-//! | [`Point`] | `e021, e013, e032, e123` | `x e032 + y e013 + z e021 + w e123` is `(x, y, z) / w`; `w = 0` a direction |
+//! | [`Point`] | `e021, e013, e032, e123` | `x e032 + y e013 + z e021 + w e123`: `(x, y, z) / w` |
 //! | [`Motor`] | `1, e01, e02, e03, e12, e31, e23, e0123` | rigid motions (the even subalgebra) |
 //! | [`Rotor`] | `1, e12, e31, e23` | rotations about lines through the origin |
 //! | [`Translator`] | `1, e01, e02, e03` | translations |
 //! | [`Pseudoscalar`] | `e0123` | |
 //! | [`Multivector`] | all sixteen | |
+//!
+//! A point with `w = 0` is an ideal point: the direction `(x, y, z)`.
 //!
 //! # Operators
 //!

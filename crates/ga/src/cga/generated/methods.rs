@@ -11,7 +11,8 @@ use crate::products::{Commutator, LeftContraction, RightContraction, Sandwich, S
 impl<T: Scalar> Vector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -23,7 +24,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -35,7 +37,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -47,7 +50,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -59,7 +63,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -73,7 +78,8 @@ impl<T: Scalar> Vector<T> {
 impl<T: Scalar> Bivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -85,7 +91,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -97,7 +104,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -109,7 +117,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -123,7 +132,8 @@ impl<T: Scalar> Bivector<T> {
 impl<T: Scalar> Trivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -135,7 +145,8 @@ impl<T: Scalar> Trivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -147,7 +158,8 @@ impl<T: Scalar> Trivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -159,7 +171,8 @@ impl<T: Scalar> Trivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -173,7 +186,8 @@ impl<T: Scalar> Trivector<T> {
 impl<T: Scalar> Quadvector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -185,7 +199,8 @@ impl<T: Scalar> Quadvector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -197,7 +212,8 @@ impl<T: Scalar> Quadvector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -209,7 +225,8 @@ impl<T: Scalar> Quadvector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -223,7 +240,8 @@ impl<T: Scalar> Quadvector<T> {
 impl<T: Scalar> Pseudoscalar<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -235,7 +253,8 @@ impl<T: Scalar> Pseudoscalar<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -247,7 +266,8 @@ impl<T: Scalar> Pseudoscalar<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -261,7 +281,8 @@ impl<T: Scalar> Pseudoscalar<T> {
 impl<T: Scalar> Rotor<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -273,7 +294,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -285,7 +307,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -297,7 +320,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -309,7 +333,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -323,7 +348,8 @@ impl<T: Scalar> Rotor<T> {
 impl<T: Scalar> Motor<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -335,7 +361,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -347,7 +374,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -359,7 +387,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -371,7 +400,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -385,7 +415,8 @@ impl<T: Scalar> Motor<T> {
 impl<T: Scalar> Multivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -397,7 +428,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -409,7 +441,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -421,7 +454,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output

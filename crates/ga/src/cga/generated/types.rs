@@ -402,7 +402,8 @@ impl<T: Scalar> Bivector<T> {
         T::ONE,
     );
 
-    /// From the coefficients of `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`.
+    /// From the coefficients of `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`,
+    /// `e45`.
     #[allow(clippy::too_many_arguments)]
     #[must_use]
     #[inline]
@@ -861,7 +862,8 @@ impl<T: Scalar> Trivector<T> {
         T::ONE,
     );
 
-    /// From the coefficients of `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`, `e345`.
+    /// From the coefficients of `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`,
+    /// `e245`, `e345`.
     #[allow(clippy::too_many_arguments)]
     #[must_use]
     #[inline]
@@ -1818,9 +1820,11 @@ impl Mul<Rotor<f64>> for f64 {
     }
 }
 
-/// An element of the even subalgebra (grades 0, 2, 4): rotors, translators, dilators and their products.
+/// An element of the even subalgebra (grades 0, 2, 4): rotors, translators, dilators and their
+/// products.
 ///
-/// Blades `1`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`.
+/// Blades `1`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e1234`,
+/// `e1235`, `e1245`, `e1345`, `e2345`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Motor<T> {
     /// The scalar part.
@@ -2182,7 +2186,8 @@ impl<T: Scalar> Motor<T> {
         T::ONE,
     );
 
-    /// From the coefficients of `1`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`.
+    /// From the coefficients of `1`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`,
+    /// `e45`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`.
     #[allow(clippy::too_many_arguments)]
     #[must_use]
     #[inline]
@@ -2224,7 +2229,8 @@ impl<T: Scalar> Motor<T> {
         }
     }
 
-    /// From `[s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345]`.
+    /// From `[s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345,
+    /// e2345]`.
     #[must_use]
     #[inline]
     pub const fn from_array(a: [T; 16]) -> Self {
@@ -2234,7 +2240,8 @@ impl<T: Scalar> Motor<T> {
         )
     }
 
-    /// As `[s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345, e2345]`.
+    /// As `[s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234, e1235, e1245, e1345,
+    /// e2345]`.
     #[must_use]
     #[inline]
     pub const fn to_array(self) -> [T; 16] {
@@ -2595,7 +2602,9 @@ impl Mul<Motor<f64>> for f64 {
 
 /// A general multivector of R(4,1), thirty-two coefficients in the basis order.
 ///
-/// Blades `1`, `e1`, `e2`, `e3`, `e4`, `e5`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`, `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`.
+/// Blades `1`, `e1`, `e2`, `e3`, `e4`, `e5`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`,
+/// `e34`, `e35`, `e45`, `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`,
+/// `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Multivector<T> {
     /// The scalar part.
@@ -3821,7 +3830,9 @@ impl<T: Scalar> Multivector<T> {
         T::ONE,
     );
 
-    /// From the coefficients of `1`, `e1`, `e2`, `e3`, `e4`, `e5`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`, `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`.
+    /// From the coefficients of `1`, `e1`, `e2`, `e3`, `e4`, `e5`, `e12`, `e13`, `e14`, `e15`,
+    /// `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e123`, `e124`, `e125`, `e134`, `e135`, `e145`,
+    /// `e234`, `e235`, `e245`, `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`.
     #[allow(clippy::too_many_arguments)]
     #[must_use]
     #[inline]
@@ -3895,7 +3906,8 @@ impl<T: Scalar> Multivector<T> {
         }
     }
 
-    /// From `[s, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e123, e124, e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235, e1245, e1345, e2345, e12345]`.
+    /// From `[s, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e123, e124,
+    /// e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235, e1245, e1345, e2345, e12345]`.
     #[must_use]
     #[inline]
     pub const fn from_array(a: [T; 32]) -> Self {
@@ -3906,7 +3918,8 @@ impl<T: Scalar> Multivector<T> {
         )
     }
 
-    /// As `[s, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e123, e124, e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235, e1245, e1345, e2345, e12345]`.
+    /// As `[s, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e123, e124,
+    /// e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235, e1245, e1345, e2345, e12345]`.
     #[must_use]
     #[inline]
     pub const fn to_array(self) -> [T; 32] {

@@ -310,7 +310,8 @@ impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
     }
 }
 
-/// Geometric product `Rotor * Rotor -> Rotor`. The expansion the hand-written kernel is checked against.
+/// Geometric product `Rotor * Rotor -> Rotor`. The expansion the hand-written kernel is checked
+/// against.
 #[cfg_attr(not(test), allow(dead_code))]
 #[inline]
 pub(crate) fn geometric_rotor_rotor<T: Scalar>(a: Rotor<T>, b: Rotor<T>) -> Rotor<T> {
@@ -427,7 +428,8 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
     }
 }
 
-/// Geometric product `Multivector * Multivector -> Multivector`. The expansion the hand-written kernel is checked against.
+/// Geometric product `Multivector * Multivector -> Multivector`. The expansion the hand-written
+/// kernel is checked against.
 #[cfg_attr(not(test), allow(dead_code))]
 #[inline]
 pub(crate) fn geometric_multivector_multivector<T: Scalar>(

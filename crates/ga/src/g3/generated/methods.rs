@@ -9,7 +9,8 @@ use crate::products::{Commutator, LeftContraction, RightContraction, Sandwich, S
 impl<T: Scalar> Vector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -21,7 +22,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -33,7 +35,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -45,7 +48,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -57,7 +61,8 @@ impl<T: Scalar> Vector<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -71,7 +76,8 @@ impl<T: Scalar> Vector<T> {
 impl<T: Scalar> Bivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -83,7 +89,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -95,7 +102,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -107,7 +115,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -119,7 +128,8 @@ impl<T: Scalar> Bivector<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -133,7 +143,8 @@ impl<T: Scalar> Bivector<T> {
 impl<T: Scalar> Trivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -145,7 +156,8 @@ impl<T: Scalar> Trivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -157,7 +169,8 @@ impl<T: Scalar> Trivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -171,7 +184,8 @@ impl<T: Scalar> Trivector<T> {
 impl<T: Scalar> Rotor<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -183,7 +197,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -195,7 +210,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -207,7 +223,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -219,7 +236,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -233,7 +251,8 @@ impl<T: Scalar> Rotor<T> {
 impl<T: Scalar> Multivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -245,7 +264,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -257,7 +277,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -269,7 +290,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output

@@ -9,7 +9,8 @@ use crate::products::{Commutator, LeftContraction, RightContraction, Sandwich, S
 impl<T: Scalar> Plane<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -21,7 +22,8 @@ impl<T: Scalar> Plane<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -33,7 +35,8 @@ impl<T: Scalar> Plane<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -45,7 +48,8 @@ impl<T: Scalar> Plane<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -57,7 +61,8 @@ impl<T: Scalar> Plane<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -71,7 +76,8 @@ impl<T: Scalar> Plane<T> {
 impl<T: Scalar> Line<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -83,7 +89,8 @@ impl<T: Scalar> Line<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -95,7 +102,8 @@ impl<T: Scalar> Line<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -107,7 +115,8 @@ impl<T: Scalar> Line<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -119,7 +128,8 @@ impl<T: Scalar> Line<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -133,7 +143,8 @@ impl<T: Scalar> Line<T> {
 impl<T: Scalar> Point<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -145,7 +156,8 @@ impl<T: Scalar> Point<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -157,7 +169,8 @@ impl<T: Scalar> Point<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -169,7 +182,8 @@ impl<T: Scalar> Point<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -181,7 +195,8 @@ impl<T: Scalar> Point<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -195,7 +210,8 @@ impl<T: Scalar> Point<T> {
 impl<T: Scalar> Motor<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -207,7 +223,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -219,7 +236,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -231,7 +249,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -243,7 +262,8 @@ impl<T: Scalar> Motor<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -257,7 +277,8 @@ impl<T: Scalar> Motor<T> {
 impl<T: Scalar> Rotor<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -269,7 +290,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -281,7 +303,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -293,7 +316,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -305,7 +329,8 @@ impl<T: Scalar> Rotor<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -319,7 +344,8 @@ impl<T: Scalar> Rotor<T> {
 impl<T: Scalar> Translator<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -331,7 +357,8 @@ impl<T: Scalar> Translator<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -343,7 +370,8 @@ impl<T: Scalar> Translator<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -355,7 +383,8 @@ impl<T: Scalar> Translator<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -367,7 +396,8 @@ impl<T: Scalar> Translator<T> {
 
     /// The sandwich `self b self̃` (the grades of `b` kept).
     ///
-    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Sandwich`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn sandwich<B>(self, b: B) -> <Self as Sandwich<B>>::Output
@@ -381,7 +411,8 @@ impl<T: Scalar> Translator<T> {
 impl<T: Scalar> Pseudoscalar<T> {
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -393,7 +424,8 @@ impl<T: Scalar> Pseudoscalar<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output
@@ -407,7 +439,8 @@ impl<T: Scalar> Pseudoscalar<T> {
 impl<T: Scalar> Multivector<T> {
     /// The left contraction `self ⌋ b`.
     ///
-    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`LeftContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn left_contraction<B>(self, b: B) -> <Self as LeftContraction<B>>::Output
@@ -419,7 +452,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The right contraction `self ⌊ b`.
     ///
-    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`RightContraction`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn right_contraction<B>(self, b: B) -> <Self as RightContraction<B>>::Output
@@ -431,7 +465,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The scalar product `⟨self b⟩₀`.
     ///
-    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`ScalarProduct`] is implemented for, with the
+    /// smallest result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn scalar_product<B>(self, b: B) -> <Self as ScalarProduct<B>>::Output
@@ -443,7 +478,8 @@ impl<T: Scalar> Multivector<T> {
 
     /// The commutator product `(self b - b self) / 2`.
     ///
-    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest result type; this inherent form needs no import of the trait.
+    /// Defined for the right-hand types that [`Commutator`] is implemented for, with the smallest
+    /// result type; this inherent form needs no import of the trait.
     #[must_use]
     #[inline]
     pub fn commutator<B>(self, b: B) -> <Self as Commutator<B>>::Output

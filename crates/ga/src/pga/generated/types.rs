@@ -450,7 +450,8 @@ impl Mul<Line<f64>> for f64 {
     }
 }
 
-/// A point (grade 3) `x e032 + y e013 + z e021 + w e123`: the Euclidean point `(x, y, z) / w`, or the direction `(x, y, z)` when `w = 0` (an ideal point).
+/// A point (grade 3) `x e032 + y e013 + z e021 + w e123`: the Euclidean point `(x, y, z) / w`, or
+/// the direction `(x, y, z)` when `w = 0` (an ideal point).
 ///
 /// Blades `e021`, `e013`, `e032`, `e123`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -1537,7 +1538,8 @@ impl Mul<Pseudoscalar<f64>> for f64 {
 
 /// A general multivector of R(3,0,1), sixteen coefficients in the basis order.
 ///
-/// Blades `1`, `e0`, `e1`, `e2`, `e3`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e021`, `e013`, `e032`, `e123`, `e0123`.
+/// Blades `1`, `e0`, `e1`, `e2`, `e3`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e021`, `e013`,
+/// `e032`, `e123`, `e0123`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Multivector<T> {
     /// The scalar part.
@@ -1899,7 +1901,8 @@ impl<T: Scalar> Multivector<T> {
         T::ONE,
     );
 
-    /// From the coefficients of `1`, `e0`, `e1`, `e2`, `e3`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e021`, `e013`, `e032`, `e123`, `e0123`.
+    /// From the coefficients of `1`, `e0`, `e1`, `e2`, `e3`, `e01`, `e02`, `e03`, `e12`, `e31`,
+    /// `e23`, `e021`, `e013`, `e032`, `e123`, `e0123`.
     #[allow(clippy::too_many_arguments)]
     #[must_use]
     #[inline]
