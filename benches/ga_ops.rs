@@ -219,7 +219,15 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
     // Each macro call benchmarks one spec (criterion, then the paired measurement) and records
     // it for the CSV.
     macro_rules! pair {
-        ($op:literal, $precision:literal, $target:expr, $ga_inputs:expr, $ga:expr, $glam_inputs:expr, $glam:expr) => {{
+        (
+            $op:literal,
+            $precision:literal,
+            $target:expr,
+            $ga_inputs:expr,
+            $ga:expr,
+            $glam_inputs:expr,
+            $glam:expr
+        ) => {{
             let (ga, glam) = (typed($ga_inputs, $ga), typed($glam_inputs, $glam));
             let ratio = paired_ratio(
                 rounds,

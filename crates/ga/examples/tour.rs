@@ -77,7 +77,8 @@ fn main() {
     );
     let behind = Plane::from_triangle(-ta, -tb, -tc);
     println!(
-        "the mirrored triangle behind the origin has offset {} (the report's |a_perp| would say {})",
+        "the mirrored triangle behind the origin has offset {} \
+         (the report's |a_perp| would say {})",
         behind.offset,
         (-ta).reject(behind.bivector).norm()
     );

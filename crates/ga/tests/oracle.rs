@@ -97,7 +97,14 @@ macro_rules! binary {
     ($t:ty, $tol:expr, $op:tt, $reference:expr; $($a:ident $b:ident),+ $(,)?) => {
         $(
             check_binary::<$a<$t>, $b<$t>, _>(
-                concat!(stringify!($a), " ", stringify!($op), " ", stringify!($b), " (", stringify!($t), ")"),
+                concat!(
+                    stringify!($a),
+                    " ",
+                    stringify!($op),
+                    " ",
+                    stringify!($b),
+                    " (", stringify!($t), ")",
+                ),
                 $tol,
                 |x, y| x $op y,
                 $reference,
@@ -111,8 +118,10 @@ macro_rules! all_pairs {
     ($t:ty, $tol:expr, $op:tt, $reference:expr) => {
         binary!($t, $tol, $op, $reference;
             Vector Vector, Vector Bivector, Vector Trivector, Vector Rotor, Vector Multivector,
-            Bivector Vector, Bivector Bivector, Bivector Trivector, Bivector Rotor, Bivector Multivector,
-            Trivector Vector, Trivector Bivector, Trivector Trivector, Trivector Rotor, Trivector Multivector,
+            Bivector Vector, Bivector Bivector, Bivector Trivector,
+            Bivector Rotor, Bivector Multivector,
+            Trivector Vector, Trivector Bivector, Trivector Trivector,
+            Trivector Rotor, Trivector Multivector,
             Rotor Vector, Rotor Bivector, Rotor Trivector, Rotor Rotor, Rotor Multivector,
             Multivector Vector, Multivector Bivector, Multivector Trivector, Multivector Rotor,
             Multivector Multivector,
@@ -189,8 +198,18 @@ fn regressive_product() {
 fn scaling() {
     macro_rules! scaling {
         ($($ty:ident),+) => {$(
-            check_binary::<$ty<f64>, f64, _>(concat!(stringify!($ty), " * s"), F64, |x, s| x * s, Reference::geometric);
-            check_binary::<f64, $ty<f64>, _>(concat!("s * ", stringify!($ty)), F64, |s, x| s * x, Reference::geometric);
+            check_binary::<$ty<f64>, f64, _>(
+                concat!(stringify!($ty), " * s"),
+                F64,
+                |x, s| x * s,
+                Reference::geometric,
+            );
+            check_binary::<f64, $ty<f64>, _>(
+                concat!("s * ", stringify!($ty)),
+                F64,
+                |s, x| s * x,
+                Reference::geometric,
+            );
             check_binary_scaled::<$ty<f64>, f64, _>(
                 concat!(stringify!($ty), " / s"),
                 F64,
@@ -208,11 +227,41 @@ fn scaling() {
 fn unary_operations() {
     macro_rules! involutions {
         ($($ty:ident),+) => {$(
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::reverse"), F64, $ty::reverse, Reference::reverse, linear_scale);
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::grade_involution"), F64, $ty::grade_involution, Reference::grade_involution, linear_scale);
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::conjugate"), F64, $ty::conjugate, Reference::conjugate, linear_scale);
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::norm_squared"), F64, $ty::norm_squared, |a| g3().scalar(a.norm_squared()), |a, _| norm(a) * norm(a));
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::norm"), F64, $ty::norm, |a| g3().scalar(a.norm()), linear_scale);
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::reverse"),
+                F64,
+                $ty::reverse,
+                Reference::reverse,
+                linear_scale,
+            );
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::grade_involution"),
+                F64,
+                $ty::grade_involution,
+                Reference::grade_involution,
+                linear_scale,
+            );
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::conjugate"),
+                F64,
+                $ty::conjugate,
+                Reference::conjugate,
+                linear_scale,
+            );
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::norm_squared"),
+                F64,
+                $ty::norm_squared,
+                |a| g3().scalar(a.norm_squared()),
+                |a, _| norm(a) * norm(a),
+            );
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::norm"),
+                F64,
+                $ty::norm,
+                |a| g3().scalar(a.norm()),
+                linear_scale,
+            );
             check_unary::<$ty<f64>, _>(
                 concat!(stringify!($ty), "::inverse"),
                 F64,
@@ -225,8 +274,20 @@ fn unary_operations() {
     involutions!(Vector, Bivector, Trivector, Rotor, Multivector);
     macro_rules! duals {
         ($($ty:ident),+) => {$(
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::dual"), F64, $ty::dual, |a| a.dual().unwrap(), linear_scale);
-            check_unary::<$ty<f64>, _>(concat!(stringify!($ty), "::undual"), F64, $ty::undual, Reference::undual, linear_scale);
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::dual"),
+                F64,
+                $ty::dual,
+                |a| a.dual().unwrap(),
+                linear_scale,
+            );
+            check_unary::<$ty<f64>, _>(
+                concat!(stringify!($ty), "::undual"),
+                F64,
+                $ty::undual,
+                Reference::undual,
+                linear_scale,
+            );
         )+};
     }
     duals!(Vector, Bivector, Trivector, Multivector);

@@ -71,13 +71,22 @@ proptest! {
     #![proptest_config(config(1))]
 
     #[test]
-    fn geometric_product_is_associative(a in multivector(), b in multivector(), c in multivector()) {
+    fn geometric_product_is_associative(
+        a in multivector(),
+        b in multivector(),
+        c in multivector(),
+    ) {
         let scale = a.norm() * b.norm() * c.norm();
         prop_assert!(close((a * b) * c, a * (b * c), scale));
     }
 
     #[test]
-    fn mixed_products_are_associative(a in vector(), b in bivector(), c in bivector(), r in unit_rotor()) {
+    fn mixed_products_are_associative(
+        a in vector(),
+        b in bivector(),
+        c in bivector(),
+        r in unit_rotor(),
+    ) {
         // Across grade types, through the specialised kernels: odd results are multivectors,
         // even ones rotors.
         let scale = a.norm() * b.norm();
@@ -110,14 +119,23 @@ proptest! {
     }
 
     #[test]
-    fn reverse_of_a_product_reverses_the_order(a in multivector(), b in multivector(), c in multivector()) {
+    fn reverse_of_a_product_reverses_the_order(
+        a in multivector(),
+        b in multivector(),
+        c in multivector(),
+    ) {
         let scale = a.norm() * b.norm() * c.norm();
         let want = c.reverse() * b.reverse() * a.reverse();
         prop_assert!(close((a * b * c).reverse(), want, scale));
     }
 
     #[test]
-    fn dual_and_undual_are_inverse(m in multivector(), v in vector(), b in bivector(), t in coefficient()) {
+    fn dual_and_undual_are_inverse(
+        m in multivector(),
+        v in vector(),
+        b in bivector(),
+        t in coefficient(),
+    ) {
         prop_assert_eq!(m.dual().undual(), m);
         prop_assert_eq!(m.undual().dual(), m);
         prop_assert_eq!(v.dual().undual(), v);
@@ -173,7 +191,11 @@ proptest! {
     /// With exact (small integer) coefficients, `inverse()` is `None` exactly when
     /// `A Ā = 0`.
     #[test]
-    fn inverse_is_none_exactly_when_the_central_norm_vanishes(x in integer_multivector(), d in zero_divisor(), make_singular in any::<bool>()) {
+    fn inverse_is_none_exactly_when_the_central_norm_vanishes(
+        x in integer_multivector(),
+        d in zero_divisor(),
+        make_singular in any::<bool>(),
+    ) {
         let a = if make_singular { d * x } else { x };
         let (alpha, beta) = central_norm(a);
         let singular = alpha == 0.0 && beta == 0.0;
@@ -184,7 +206,12 @@ proptest! {
     }
 
     #[test]
-    fn typed_inverses(v in nonzero_vector(), b in bivector(), r in unit_rotor(), t in coefficient()) {
+    fn typed_inverses(
+        v in nonzero_vector(),
+        b in bivector(),
+        r in unit_rotor(),
+        t in coefficient(),
+    ) {
         prop_assert!(close(Multivector::from(v * v.inverse().unwrap()), Multivector::ONE, 1.0));
         if let Some(bi) = b.inverse() {
             prop_assert!(close(b * bi, Rotor::IDENTITY, b.norm() * bi.norm()));
@@ -223,7 +250,11 @@ proptest! {
 
     /// from_vectors takes the first direction to the second, including at 0 and 180 degrees.
     #[test]
-    fn from_vectors_handles_equal_and_opposite_directions(a in nonzero_vector(), b in nonzero_vector(), k in 0.1..10.0_f64) {
+    fn from_vectors_handles_equal_and_opposite_directions(
+        a in nonzero_vector(),
+        b in nonzero_vector(),
+        k in 0.1..10.0_f64,
+    ) {
         let unit = |v: Vector<f64>| v / v.norm();
         for to in [b, a * k, a * -k] {
             let r = Rotor::from_vectors(a, to);

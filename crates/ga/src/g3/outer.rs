@@ -3,7 +3,8 @@
 //! `a ^ b` keeps the grade `r + s` part of the geometric product of an `r`-blade and an
 //! `s`-blade (report figure 2.6). Pairs whose outer product always vanishes in 3D (vector ^
 //! trivector, bivector ^ bivector, ...) have no operator; convert to
-//! [`Multivector`](crate::g3::Multivector) for generic code. The scalar case is ordinary scaling (`*`).
+//! [`Multivector`](crate::g3::Multivector) for generic code. The scalar case is ordinary scaling
+//! (`*`).
 //!
 //! Result types, `a ^ b` (`T` is the scalar, `—` no operator):
 //!

@@ -6,8 +6,8 @@
 #![allow(dead_code)]
 
 use ga::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
-use ga_reference::{Multivector as Reference, from_g3_report, to_g3_report};
 use ga::{Real, Scalar};
+use ga_reference::{Multivector as Reference, from_g3_report, to_g3_report};
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
 
@@ -159,6 +159,7 @@ pub fn assert_close(what: &str, got: [f64; 8], want: [f64; 8], scale: f64, toler
     let error = got.iter().zip(&want).fold(0.0_f64, |m, (g, w)| m.max((g - w).abs()));
     assert!(
         error <= tolerance * scale,
-        "{what}:\n  got  {got:?}\n  want {want:?}\n  error {error:e} > {tolerance:e} x scale {scale:e}"
+        "{what}:\n  got  {got:?}\n  want {want:?}\n  \
+         error {error:e} > {tolerance:e} x scale {scale:e}"
     );
 }
