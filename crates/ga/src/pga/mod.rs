@@ -85,5 +85,9 @@
 #![doc = include_str!("generated/cayley.md")]
 
 mod generated;
+pub mod geometry;
+#[cfg(feature = "glam")]
+mod glam_interop;
+pub mod motor;
 
 pub use generated::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
