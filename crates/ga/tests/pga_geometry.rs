@@ -442,3 +442,41 @@ fn glam_conversions_agree() {
         assert!(Affine3A::from(m32).abs_diff_eq(a32, 1e-5));
     }
 }
+
+#[test]
+fn the_matrix_of_any_motor_is_its_sandwich_on_points() {
+    let mut rng = rng("matrix");
+    for _ in 0..CASES {
+        // Arbitrary even elements, not unit and off the Study condition: the sandwich is still
+        // an affine map of the points, divided by the weight.
+        let c: [f64; 8] = core::array::from_fn(|_| rng.random_range(-2.0..2.0));
+        let m = Motor::from_array(c);
+        let r = m.to_matrix();
+        let p = vec3(&mut rng, 5.0);
+        let want = moved(m, p);
+        let got: Vec<f64> =
+            r.iter().map(|row| row[0] * p[0] + row[1] * p[1] + row[2] * p[2] + row[3]).collect();
+        assert_close(&got, &want, 1e-11 * want.iter().fold(1.0_f64, |a, x| a.max(x.abs())));
+    }
+}
+
+#[test]
+fn single_precision_agrees_with_double() {
+    let mut rng = rng("f32");
+    for _ in 0..CASES {
+        let b = random_line(&mut rng, 3.0);
+        let b32 = Line::<f32>::from_array(b.to_array().map(|x| x as f32));
+        let m = b.exp();
+        let m32 = b32.exp();
+        let widened = m32.to_array().map(f64::from);
+        assert_close(&widened, &m.to_array(), 1e-5);
+        let back = m32.log().to_array().map(f64::from);
+        assert_close(&back, &b.to_array(), 1e-4);
+        let tiny = random_line(&mut rng, 1e-3);
+        let tiny32 = Line::<f32>::from_array(tiny.to_array().map(|x| x as f32));
+        let got = tiny32.exp().to_array().map(f64::from);
+        assert_close(&got, &tiny.exp().to_array(), 1e-6);
+        let back = tiny32.exp().log().to_array().map(f64::from);
+        assert_close(&back, &tiny.to_array(), 1e-6);
+    }
+}

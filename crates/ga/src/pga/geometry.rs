@@ -36,7 +36,7 @@ use crate::pga::{Line, Plane, Point};
 
 /// `a × b`.
 #[inline]
-fn cross<T: Scalar>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+pub(crate) fn cross<T: Scalar>(a: [T; 3], b: [T; 3]) -> [T; 3] {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
 

@@ -39,7 +39,7 @@
 //! ```
 
 use crate::Scalar;
-use crate::pga::geometry::length;
+use crate::pga::geometry::{cross, length};
 use crate::pga::{Line, Motor, Plane, Point, Rotor, Translator};
 
 impl<T: Scalar> Rotor<T> {
@@ -276,21 +276,36 @@ impl<T: Scalar> Motor<T> {
         self.reverse() / self.study_norm_squared().0
     }
 
-    /// The motion as a 3×4 matrix `[R | t]` (rows), acting on `(x, y, z, 1)`: the columns are
-    /// the images of the directions `e1, e2, e3` (ideal points, which the translation does not
-    /// move) and of the origin, each divided by the weight `s² + |E|²` the sandwich scales
-    /// points by (1 for a unit motor).
+    /// The motion as a 3×4 matrix `[R | t]` (rows), acting on `(x, y, z, 1)`, in closed form:
+    /// the coefficients of the generated `Motor`-`Point` sandwich, divided by the weight
+    /// `a = s² + |v|²` it scales points by (1 for a unit motor). Transforming many points by
+    /// one motor is cheapest through this matrix (9 products and 9 sums a point).
+    ///
+    /// With `v = (e23, e31, e12)`, `F = (e01, e02, e03)` and `p = e0123`, the sandwich maps the
+    /// point `(x, w)` to `((s² - |v|²) x + 2 (v · x) v - 2 s (v × x) + w t', a w)` (a rotation
+    /// by the rotor `s + E`, which is the quaternion `(s, -v)`), where
+    /// `t' = -2 (s F + F × v + p v)` is `a` times the image of the origin.
     #[must_use]
     pub fn to_matrix(self) -> [[T; 4]; 3] {
-        let (o, z) = (T::ONE, T::ZERO);
-        let columns = [
-            Point::direction(o, z, z),
-            Point::direction(z, o, z),
-            Point::direction(z, z, o),
-            Point::from_xyz(z, z, z),
+        let (s, p) = (self.s, self.e0123);
+        let v = [self.e23, self.e31, self.e12];
+        let f = [self.e01, self.e02, self.e03];
+        let a = s * s + v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        let k = T::TWO / a;
+        // (s² - |v|²) / a = 2 s² / a - 1.
+        let diag = k * s * s - T::ONE;
+        let fv = cross(f, v);
+        let t = [
+            -k * (s * f[0] + fv[0] + p * v[0]),
+            -k * (s * f[1] + fv[1] + p * v[1]),
+            -k * (s * f[2] + fv[2] + p * v[2]),
+        ];
+        let (xy, xz, yz) = (k * v[0] * v[1], k * v[0] * v[2], k * v[1] * v[2]);
+        let (sx, sy, sz) = (k * s * v[0], k * s * v[1], k * s * v[2]);
+        [
+            [diag + k * v[0] * v[0], xy + sz, xz - sy, t[0]],
+            [xy - sz, diag + k * v[1] * v[1], yz + sx, t[1]],
+            [xz + sy, yz - sx, diag + k * v[2] * v[2], t[2]],
         ]
-        .map(|p| self.transform_point(p).xyz_weighted());
-        let w = self.study_norm_squared().0;
-        core::array::from_fn(|i| core::array::from_fn(|j| columns[j][i] / w))
     }
 }
