@@ -132,6 +132,11 @@ fn join_and_plane_through_three_points_match_cross_products_exactly() {
         assert_eq!(line.direction(), (vq - vp).to_array());
         assert_eq!(line.moment(), vp.cross(vq).to_array());
         assert_eq!(line, Line::from_point_direction(p, (vq - vp).to_array()));
+        // The foot of the perpendicular from the origin: on the line, orthogonal to it.
+        if let Some(c) = line.closest_point_to_origin() {
+            assert!(line.distance_to_point(Point::from_xyz_array(c)) < 1e-14);
+            assert!(dv(c).dot(vq - vp).abs() < 1e-13);
+        }
         let plane = Plane::through(pp, pq, pr);
         let n = (vq - vp).cross(vr - vp);
         assert_eq!(plane.normal(), n.to_array());

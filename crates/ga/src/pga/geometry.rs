@@ -7,11 +7,11 @@
 //!
 //! - the point `(x, y, z)` is `x e032 + y e013 + z e021 + e123`; a weight `w` scales all four,
 //!   and `w = 0` is the ideal point (direction) `(x, y, z)`;
-//! - the plane `n · x + d = 0` is `n1 e1 + n2 e2 + n3 e3 + d e0`;
+//! - the plane `n · x + c = 0` is `n1 e1 + n2 e2 + n3 e3 + c e0`;
 //! - a line has a **direction** `d = (e23, e31, e12)` and a **moment** `m = (e01, e02, e03)`,
 //!   its Plücker coordinates: `m = p × d` for any point `p` on it, so `d · m = 0`. The join
 //!   `P & Q` of the points `p` and `q` has `d = q - p` and `m = p × q`; the meet `a ^ b` of the
-//!   planes `(n_a, d_a)` and `(n_b, d_b)` has `d = n_a × n_b` and `m = d_a n_b - d_b n_a`. An
+//!   planes `(n_a, c_a)` and `(n_b, c_b)` has `d = n_a × n_b` and `m = c_a n_b - c_b n_a`. An
 //!   ideal line (the line at infinity of a plane) has `d = 0`.
 //!
 //! Norms are those of the generated `norm`, which only counts the blades without `e0`: a
@@ -128,8 +128,8 @@ impl<T: Scalar> Point<T> {
 
     /// The Euclidean distance to `q`. Both are Euclidean points (weight not 0), of any weight.
     ///
-    /// The join `P & Q` has direction `w_P q - w_Q p` ([`Line::through`]), whose length is
-    /// `|w_P w_Q| |q - p|`.
+    /// The join `P & Q` has direction `w_P w_Q (q - p)` for the Euclidean points `p`, `q`
+    /// ([`Line::through`]), whose length is `|w_P w_Q|` times the distance.
     #[must_use]
     #[inline]
     pub fn distance(self, q: Self) -> T {
@@ -140,9 +140,9 @@ impl<T: Scalar> Point<T> {
     /// with the line through `P` along its normal.
     ///
     /// `plane | P` has direction `w n` and moment `w p × n` ([`Plane::normal_line_through`]);
-    /// by [`Line::meet_plane`] its meet with the plane `(n, d)` is, for `w = 1`, the point
-    /// `p |n|² - n (n · p + d)` of weight `|n|²`, i.e. `p - n (n · p + d) / |n|²`. The
-    /// result has weight `w² |n|²`, which [`Point::to_xyz`] divides out.
+    /// by [`Line::meet_plane`] its meet with the plane `(n, c)` is, for `w = 1`, the point
+    /// `p |n|² - n (n · p + c)` of weight `|n|²`, i.e. `p - n (n · p + c) / |n|²`. The
+    /// result has weight `w |n|²`, which [`Point::to_xyz`] divides out.
     #[must_use]
     #[inline]
     pub fn project_onto_plane(self, plane: Plane<T>) -> Self {
@@ -179,7 +179,7 @@ impl<T: Scalar> Plane<T> {
 
     /// The plane through three points, the join `P & Q & R`: for Euclidean points of weight
     /// 1 its normal is `(q - p) × (r - p)` (counter-clockwise `p, q, r` seen from the side it
-    /// points to) and its offset `-(p × q) · r`.
+    /// points to) and its `e0` coefficient `-(p × q) · r`.
     ///
     /// From the generated `Line & Point`: the line `(d, m)` joined with `r` is the plane
     /// `(m + d × r) · x - m · r = 0`; with `d = q - p` and `m = p × q = p × d`,
@@ -208,7 +208,7 @@ impl<T: Scalar> Plane<T> {
 
     /// The signed distance of the Euclidean point `p` from the plane, positive on the side
     /// the normal points to: `(plane & P) / (|n| w)`, where the generated `Plane & Point` is
-    /// `n · (w p) + d w`.
+    /// `n · (w p) + c w`.
     #[must_use]
     #[inline]
     pub fn signed_distance(self, p: Point<T>) -> T {
@@ -266,9 +266,10 @@ impl<T: Scalar> Line<T> {
 
     /// The line through two points, their join `P & Q`.
     ///
-    /// The generated `Point & Point` gives direction `w_P q - w_Q p` (`q - p` for weight 1)
-    /// and moment `p × q` (`= p × (q - p)`, as it must). With an ideal point `Q` it is the
-    /// line through `p` in the direction `q`.
+    /// The generated `Point & Point` gives, in the weighted coordinates `p_h = w_P p`,
+    /// `q_h = w_Q q` ([`Point::xyz_weighted`]), direction `w_P q_h - w_Q p_h` (`q - p` for
+    /// weight 1) and moment `p_h × q_h` (`p × q = p × (q - p)` for weight 1, as it must).
+    /// With an ideal point `Q` it is the line through `p` in the direction `q_h`.
     #[must_use]
     #[inline]
     pub fn through(p: Point<T>, q: Point<T>) -> Self {
@@ -276,8 +277,8 @@ impl<T: Scalar> Line<T> {
     }
 
     /// The line where two planes meet, `a ^ b`: direction `n_a × n_b`, moment
-    /// `d_a n_b - d_b n_a`. Check: a point `p` on both has `n_a · p = -d_a`,
-    /// `n_b · p = -d_b`, and `p × (n_a × n_b) = n_a (p · n_b) - n_b (p · n_a)`. Parallel
+    /// `c_a n_b - c_b n_a`. Check: a point `p` on both has `n_a · p = -c_a`,
+    /// `n_b · p = -c_b`, and `p × (n_a × n_b) = n_a (p · n_b) - n_b (p · n_a)`. Parallel
     /// planes meet in an ideal line.
     #[must_use]
     #[inline]
@@ -286,9 +287,9 @@ impl<T: Scalar> Line<T> {
     }
 
     /// The point where the line meets `plane`, `line ^ plane`: the weighted point
-    /// `(n × m - d_0 d, n · d)` for the plane `(n, d_0)`. Check: with `m = p × d`,
+    /// `(n × m - c d, n · d)` for the plane `(n, c)`. Check: with `m = p × d`,
     /// `n × (p × d) = p (n · d) - d (n · p)`, so the Euclidean point is
-    /// `p - d (n · p + d_0) / (n · d)`, on the line and on the plane. A line parallel to the
+    /// `p - d (n · p + c) / (n · d)`, on the line and on the plane. A line parallel to the
     /// plane meets it in the ideal point of its direction (weight `n · d = 0`).
     #[must_use]
     #[inline]

@@ -9,8 +9,9 @@
 //! Read off the generated `Motor`-`Point` sandwich:
 //!
 //! - `cos(θ/2) - sin(θ/2) L` for a line `L` with unit direction `n` rotates by `θ` about `L`,
-//!   right-handed (counter-clockwise looking against `n`): `cos(θ/2) - sin(θ/2) e12` turns
-//!   `(x, y)` to `(x cos θ - y sin θ, x sin θ + y cos θ)`. It is `exp(-θ/2 L)`.
+//!   right-handed (counter-clockwise seen from the side `n` points to):
+//!   `cos(θ/2) - sin(θ/2) e12` turns `(x, y)` to `(x cos θ - y sin θ, x sin θ + y cos θ)`. It
+//!   is `exp(-θ/2 L)`.
 //! - `1 - (t1 e01 + t2 e02 + t3 e03) / 2 = exp(-(t1 e01 + t2 e02 + t3 e03) / 2)` translates by
 //!   `t`.
 //!
@@ -95,17 +96,16 @@ fn sinc_and_g<T: Scalar>(l: T) -> (T, T) {
 impl<T: Scalar> Line<T> {
     /// The exponential `e^B` of the bivector `B = self`, a motor, in closed form.
     ///
-    /// With `l = |d|²` (`e12² + e31² + e23²`) and `m = e01 e23 + e02 e31 + e03 e12`
-    /// (`d · m` in the module's Plücker terms), `B² = -l + 2 m I`, so `B = (a + b I) L` with
-    /// `a = √l`, `b = -m / a` and `L² = -1` (a unit line). As `(a + b I)` is a Study number,
+    /// With `l = |d|²` (`e12² + e31² + e23²`) and `μ = e01 e23 + e02 e31 + e03 e12` (`d · m`
+    /// in the Plücker terms of [`crate::pga::geometry`]: 0 for a line, not for a general
+    /// bivector, a screw), `B² = -l + 2 μ I`, so `B = (a + b I) L` with `a = √l`, `b = -μ / a`
+    /// and `L² = -1` (a unit line). As `a + b I` is a Study number,
     /// `e^B = cos(a + b I) + sin(a + b I) L` with `cos(a + b I) = cos a - b sin(a) I` and
-    /// `sin(a + b I) = sin a + b cos(a) I`; multiplying out, with `s = sin(a) / a` and
-    /// `k = m (cos a - s) / l`,
-    ///
-    /// `e^B = cos a + s B + m s I + k (e23 e01 + e31 e02 + e12 e03)`
-    ///
-    /// (the last term is `-k I B_E`, as `I e23 = -e01`). A pure translation (`l = 0`) gives
-    /// `1 + B`; small `l` use the series of `s` and `k / m` (see the private `sinc_and_g`).
+    /// `sin(a + b I) = sin a + b cos(a) I`. Multiplying out, with `s = sin(a) / a` and
+    /// `k = μ (cos a - s) / l`: `e^B = cos a + s B + μ s I - k I B_E`, and `-k I B_E` adds
+    /// `k e23` to `e01`, `k e31` to `e02` and `k e12` to `e03` (`I e23 = -e01`,
+    /// `I e31 = -e02`, `I e12 = -e03`). A pure translation (`l = 0`) gives `1 + B`; small `l`
+    /// use the series of `s` and `k / μ` (see the private `sinc_and_g`).
     /// `exp(-θ/2 L)` for a unit line `L` rotates by `θ` about it, and for an ideal `L`
     /// translates (module docs).
     #[must_use]
