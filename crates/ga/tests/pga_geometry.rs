@@ -100,6 +100,10 @@ fn meet_of_two_planes_is_the_join_of_two_points_on_both() {
     let join = Line::through(p, q);
     assert_proportional(&meet.to_array(), &join.to_array(), 0.0);
     assert!(meet.contains(p) && meet.contains(q));
+    // Parallel planes meet in an ideal line, the line at infinity of planes with their normal.
+    let ideal = Line::meet(a, Plane::from_normal_offset([2.0, 2.0, 2.0], -1.0));
+    assert!(ideal.is_ideal());
+    assert_proportional(&ideal.moment(), &[1.0, 1.0, 1.0], 0.0);
 
     // Random planes: two points on both from the textbook construction (a point on the
     // line solving the two plane equations, plus the cross product of the normals).
@@ -262,6 +266,13 @@ fn motors_move_points_like_glam_affine_maps() {
         let (m, a) = random_motor(&mut rng);
         let p = vec3(&mut rng, 10.0);
         assert_close(&moved(m, p), &a.transform_point3(dv(p)).to_array(), TOL * 10.0);
+        // In single precision, like glam's Affine3A.
+        let m32 = Motor::<f32>::from_array(m.to_array().map(|x| x as f32));
+        let a32 = glam::Affine3A::from_mat4(glam::DMat4::from(a).as_mat4());
+        let p32 = glam::Vec3::from_array(p.map(|x| x as f32));
+        let got = m32.transform_point(Point::from_xyz(p32.x, p32.y, p32.z)).to_xyz().unwrap();
+        let want = a32.transform_point3(p32);
+        assert!(glam::Vec3::from_array(got).abs_diff_eq(want, 2e-5 * want.length().max(1.0)));
         // Directions (ideal points) turn but do not move.
         let d = vec3(&mut rng, 1.0);
         let got = m.transform_point(Point::direction(d[0], d[1], d[2]));
