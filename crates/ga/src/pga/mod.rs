@@ -76,9 +76,11 @@
 //! `norm_squared` is `⟨A Ã⟩₀`, so the blades containing `e0` do not count (the Euclidean norm of
 //! a plane's normal, of a point's weight `w`).
 //!
-//! These are the types and products, written by `ga-codegen` from its table; geometry
-//! constructors (points from coordinates, planes from normals, motors from axis and angle,
-//! `exp` and `log`) are built on them in their own module.
+//! These are the types and products, written by `ga-codegen` from its table. Built on them by
+//! hand: [`geometry`] (points from coordinates and back, planes from normals or three points,
+//! joins and meets, distances, angles, projections) and [`motor`] (rotors, translators and
+//! motors from axes, angles and translations, `exp` of a line and `log` of a motor in closed
+//! form, normalisation, the motor applied to each type, its matrix).
 //!
 //! # Cayley table of the geometric product
 //!
@@ -94,5 +96,9 @@
 #![doc = include_str!("generated/products.md")]
 
 mod generated;
+pub mod geometry;
+#[cfg(feature = "glam")]
+mod glam_interop;
+pub mod motor;
 
 pub use generated::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
