@@ -50,6 +50,8 @@ pub trait Scalar:
     const TWO: Self;
     /// 1/2.
     const HALF: Self;
+    /// -1/2 (a constant so that `const` items such as `cga::Vector::E_O` can use it).
+    const NEG_HALF: Self;
     /// π.
     const PI: Self;
     /// Machine epsilon (distance from 1 to the next representable number).
@@ -102,6 +104,12 @@ pub trait Scalar:
     /// price.
     #[must_use]
     fn mul_add(self, a: Self, b: Self) -> Self;
+    /// `e^self - 1`, accurate also when `self` is near zero (`sinh` of small arguments).
+    #[must_use]
+    fn exp_m1(self) -> Self;
+    /// `ln(1 + self)`, accurate also when `self` is near zero (`atanh` of small arguments).
+    #[must_use]
+    fn ln_1p(self) -> Self;
     /// Whether the value is neither infinite nor NaN.
     #[must_use]
     fn is_finite(self) -> bool;
@@ -117,6 +125,7 @@ macro_rules! impl_scalar {
             const ONE: Self = 1.0;
             const TWO: Self = 2.0;
             const HALF: Self = 0.5;
+            const NEG_HALF: Self = -0.5;
             const PI: Self = core::$t::consts::PI;
             const EPSILON: Self = $t::EPSILON;
             const INFINITY: Self = $t::INFINITY;
@@ -172,6 +181,14 @@ macro_rules! impl_scalar {
             #[inline(always)]
             fn mul_add(self, a: Self, b: Self) -> Self {
                 if cfg!(target_feature = "fma") { $t::mul_add(self, a, b) } else { self * a + b }
+            }
+            #[inline(always)]
+            fn exp_m1(self) -> Self {
+                $t::exp_m1(self)
+            }
+            #[inline(always)]
+            fn ln_1p(self) -> Self {
+                $t::ln_1p(self)
             }
             #[inline(always)]
             fn is_finite(self) -> bool {
