@@ -484,3 +484,58 @@ fn versor_inverses() {
     assert_eq!(Motor::<f64>::ZERO.inverse(), None);
     assert_eq!(Rotor::<f64>::ZERO.inverse(), None);
 }
+
+#[test]
+fn meets_of_planes_and_spheres_hold_the_common_points() {
+    let mut rng = Pcg64::seed_from_u64(0xC6A_000E);
+    for _ in 0..200 {
+        let c = random_int_v3(&mut rng, 4);
+        let p = |x: f64, y: f64, z: f64| up(c + v3(x, y, z));
+        // The planes x = c1 and y = c2 meet in the vertical line through c.
+        let px = Quadvector::plane(p(0.0, 0.0, 0.0), p(0.0, 1.0, 0.0), p(0.0, 0.0, 1.0));
+        let py = Quadvector::plane(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 0.0, 1.0));
+        let line = px & py;
+        for k in -3..=3 {
+            assert_eq!(line ^ p(0.0, 0.0, f64::from(k)), Quadvector::ZERO);
+        }
+        assert_ne!(line ^ p(1.0, 0.0, 0.0), Quadvector::ZERO);
+        // The sphere of radius 3 about c meets the plane z = c3 in the circle of radius 3.
+        let sphere = Quadvector::sphere(
+            p(3.0, 0.0, 0.0),
+            p(0.0, 3.0, 0.0),
+            p(0.0, 0.0, 3.0),
+            p(-3.0, 0.0, 0.0),
+        );
+        let pz = Quadvector::plane(p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0));
+        let circle = sphere & pz;
+        for q in [p(0.0, -3.0, 0.0), p(3.0, 0.0, 0.0), p(-3.0, 0.0, 0.0), p(0.0, 3.0, 0.0)] {
+            assert_eq!(circle ^ q, Quadvector::ZERO);
+        }
+        // On the sphere but off the plane, on the plane but off the sphere.
+        assert_ne!(circle ^ p(2.0, 2.0, 1.0), Quadvector::ZERO);
+        assert_ne!(circle ^ p(2.0, 2.0, 0.0), Quadvector::ZERO);
+        // Three planes meet in the flat point c.
+        assert_eq!((line & pz).flat_point_position(), c);
+    }
+}
+
+#[test]
+fn a_reflected_line_holds_the_reflected_points() {
+    // The sandwich maps every blade; its sign and scale do not matter for incidence.
+    let mut rng = Pcg64::seed_from_u64(0xC6A_000F);
+    for _ in 0..200 {
+        let (a, b) = (random_int_v3(&mut rng, 4), random_int_v3(&mut rng, 4));
+        if a == b {
+            continue;
+        }
+        let n = [V3::E1, V3::E2, V3::E3][rng.random_range(0..3)];
+        let plane = Vector::dual_plane(n, f64::from(rng.random_range(-3..=3)));
+        let image = plane.sandwich(Trivector::line(up(a), up(b)));
+        for k in -2..=2 {
+            let x = a + (b - a) * f64::from(k);
+            assert_eq!(image ^ plane.reflect(up(x)), Quadvector::ZERO);
+        }
+        let off = [cross(b - a, V3::E1), cross(b - a, V3::E2)].into_iter().find(|o| *o != V3::ZERO);
+        assert_ne!(image ^ plane.reflect(up(a + off.unwrap())), Quadvector::ZERO);
+    }
+}

@@ -20,6 +20,10 @@ impl<T: Scalar> Vector<T> {
     ///
     /// Both are `x - 2 (v · x) v / v²` (expand `v x v = 2 (v · x) v - v² x`), which is how it is
     /// computed, through the generated sandwich `v x ṽ`. Not finite for a null `self`.
+    ///
+    /// A direct object (a `k`-blade `A`: line, circle, plane, sphere) maps to
+    /// `(-1)^k v A v⁻¹`, which is `v.sandwich(A)` up to sign and scale; incidence (`A ∧ X = 0`)
+    /// does not depend on either.
     #[must_use]
     #[inline]
     pub fn reflect(self, x: Self) -> Self {
