@@ -86,6 +86,8 @@ pub trait Real:
     const TWO: Self;
     /// 1/2.
     const HALF: Self;
+    /// -1/2 (a constant, so that `const` items can use it, e.g. `ga::cga::Vector::E_O`).
+    const NEG_HALF: Self;
     /// π.
     const PI: Self;
     /// Machine epsilon (distance from 1 to the next representable number).
@@ -133,6 +135,12 @@ pub trait Real:
     /// Arccosine, in `[0, π]` (NaN outside `[-1, 1]`).
     #[must_use]
     fn acos(self) -> Self;
+    /// `e^self - 1`, accurate near 0.
+    #[must_use]
+    fn exp_m1(self) -> Self;
+    /// `ln(1 + self)`, accurate near 0.
+    #[must_use]
+    fn ln_1p(self) -> Self;
     /// The smaller of two values (the other one if one is NaN).
     #[must_use]
     fn min(self, other: Self) -> Self;
@@ -162,6 +170,7 @@ macro_rules! impl_real {
             const ONE: Self = 1.0;
             const TWO: Self = 2.0;
             const HALF: Self = 0.5;
+            const NEG_HALF: Self = -0.5;
             const PI: Self = core::$t::consts::PI;
             const EPSILON: Self = $t::EPSILON;
             const INFINITY: Self = $t::INFINITY;
@@ -215,6 +224,14 @@ macro_rules! impl_real {
             #[inline(always)]
             fn acos(self) -> Self {
                 $t::acos(self)
+            }
+            #[inline(always)]
+            fn exp_m1(self) -> Self {
+                $t::exp_m1(self)
+            }
+            #[inline(always)]
+            fn ln_1p(self) -> Self {
+                $t::ln_1p(self)
             }
             #[inline(always)]
             fn min(self, other: Self) -> Self {

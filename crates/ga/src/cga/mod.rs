@@ -69,7 +69,7 @@
 //!
 //! These are the types and products, written by `ga-codegen` from its table; geometry (round
 //! and flat objects, meets, reflections, rotors, translators, dilators, `exp` and `log`) is
-//! built on them in its own module.
+//! built on them by hand in [`geometry`], as methods of these types.
 //!
 //! # Cayley table of the geometric product
 //!
@@ -85,6 +85,7 @@
 #![doc = include_str!("generated/products.md")]
 
 mod generated;
+pub mod geometry;
 
 pub use generated::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
