@@ -1,5 +1,5 @@
 //! Full traversal: Mrays/s of every back end and precision, through the same BVH code, on the
-//! same rays, one thread and all threads.
+//! same rays, one thread (and all threads for the baseline back end, `la`).
 //!
 //! Scenes: the Stanford bunny (69,451 triangles), the bunny split twice (1,111,216 triangles,
 //! made at run time with `scene::generators::subdivide`) and every `obj/` scene. Ray sets (see
@@ -114,14 +114,18 @@ impl Job for BenchBackend<'_> {
             g.sampling_mode(SamplingMode::Flat).throughput(Throughput::Elements(rays.len() as u64));
             if !self.quick {
                 // One iteration traces a million rays (tens of milliseconds): ten samples of a
-                // few iterations each are plenty, and keep the full run near twenty minutes.
+                // few iterations each are plenty, and keep the full run of every back end
+                // within half an hour.
                 g.sample_size(10)
-                    .warm_up_time(Duration::from_millis(500))
-                    .measurement_time(Duration::from_secs(2));
+                    .warm_up_time(Duration::from_millis(300))
+                    .measurement_time(Duration::from_secs(1));
             }
+            // All threads only for the baseline back end: the parallel loop and the BVH are the
+            // same for every back end, so its scaling is the BVH's; every back end is measured
+            // on one thread.
             let threads_all = self.pool.map_or(1, rayon::ThreadPool::current_num_threads);
             let mut thread_counts = vec![1];
-            if threads_all > 1 {
+            if threads_all > 1 && I::NAME == Backend::BASELINE.name() {
                 thread_counts.push(threads_all);
             }
             for threads in thread_counts {
