@@ -1,7 +1,7 @@
 //! The vector parts of the `ga` and `ga-plucker` kernels, on four lanes.
 //!
 //! Both kernels store a triangle by axis, three rows of four numbers (see
-//! [`crate::precomputed`] and [`crate::plucker`]), so that what they compute for three vectors
+//! [`crate::frame`] and [`crate::watertight`]), so that what they compute for three vectors
 //! (inner products with `n`, `m_b`, `m_c`; projections of `a`, `b`, `c`) is one expression over
 //! the rows, one vector per lane. On x86-64 with AVX2 and FMA (this workspace builds with
 //! `-C target-cpu=x86-64-v3`) a row is one SSE register in `f32` and one AVX register in `f64`;
@@ -42,7 +42,7 @@ pub fn frame_products<T: Scalar>(axes: &[[T; 4]; 3], origin: &[T; 3], dir: &[T; 
 /// `(v_j - o) · ey`, and of `w` the edge value opposite it, `x_p y_q - y_p x_q` with
 /// `p = j + 1` and `q = j + 2` (mod 3). Lane 3 is of no use. A coordinate is `s_1 e_1`, plus
 /// `s_2 e_2`, plus `s_3 e_3`, with fused multiply-adds where the build has them; an edge value
-/// is two products and a subtraction, never fused (see [`crate::plucker`]).
+/// is two products and a subtraction, never fused (see [`crate::watertight`]).
 #[cfg_attr(
     all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"),
     allow(dead_code, reason = "with AVX2 and FMA only the tests use it, as the reference")
