@@ -166,18 +166,25 @@ pub fn render(
          there; a **double hit** is one that more than one of them reports hit (any-hit \
          semantics). The reference's tie rule makes exactly one triangle count for a ray \
          exactly through an edge (an **exact tie**); a kernel with simply closed edges reports \
-         both, which is counted as a double hit, while `la` and `ga-plucker` break ties with a \
-         rule of their own and report one (on a tie, either single triangle is right). Aimed \
-         rays are kept only where every triangle at the target faces the ray the same way (no \
-         fold seen along the ray). **Distance errors** are against the exact rational \
-         `t`, relative and in ulps of the back end's precision. Full definitions: the docs of \
-         `wedge_benches::accuracy`.\n"
+         both, which is counted as a double hit, while the watertight back ends ({}) break \
+         ties with a rule of their own and report one (on a tie, either single triangle is \
+         right). Aimed rays are kept only where every triangle at the target faces the ray the \
+         same way (no fold seen along the ray). **Distance errors** are against the exact \
+         rational `t`, relative and in ulps of the back end's precision. Full definitions: the \
+         docs of `wedge_benches::accuracy`.\n",
+        watertight_names()
     );
     s
 }
 
 /// Whether `name` is a back end of the registry written in a geometric algebra (`g3` now,
 /// `pga` and `cga` later): the back ends the report's conclusion is about.
+/// The back ends that declare themselves watertight, as `` `la`, `ga-plucker`, ... ``.
+fn watertight_names() -> String {
+    let names = Backend::ALL.iter().filter(|b| b.guarantees().watertight).map(|b| b.name());
+    names.map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+}
+
 fn geometric(name: &str) -> bool {
     Backend::from_name(name).is_some_and(|b| b.algebra().is_geometric())
 }

@@ -119,11 +119,12 @@ pub(super) fn limits(s: &mut String, accuracy: &[AccuracyRow], stability: &[Stab
     let _ = writeln!(s, "## Hard limits\n");
     let _ = writeln!(
         s,
-        "Watertight back ends (`la`, `ga-plucker`): no crack and no double hit on rays aimed \
-         at shared edges and vertices, in both precisions and at every step of the sweeps. \
-         Random rays: at most 10 hit/miss disagreements per million in `f32`, 1 in `f64`; \
-         median distance error at most 1 ulp in `f32`. Everywhere: no NaN, no hit outside \
-         `0 < t <= t_max`; degenerate input never panics and is never hit.\n"
+        "Watertight back ends ({}): no crack and no double hit on rays aimed at shared edges \
+         and vertices, in both precisions and at every step of the sweeps. Random rays: at \
+         most 10 hit/miss disagreements per million in `f32`, 1 in `f64`; median distance \
+         error at most 1 ulp in `f32`. Everywhere: no NaN, no hit outside `0 < t <= t_max`; \
+         degenerate input never panics and is never hit.\n",
+        super::watertight_names()
     );
     let judged = accuracy.iter().filter(|r| r.meets_limits.is_some()).count()
         + stability.iter().filter(|r| r.meets_limits.is_some()).count();
