@@ -168,6 +168,16 @@ registry! {
     G3WatertightCell => kernels_g3::G3WatertightCell,
     /// geometric algebra, Plücker lines as direction vectors and moment bivectors.
     G3Plucker => kernels_g3::G3Plucker,
+    /// projective GA, the report's method step by step: join, meet, edge planes.
+    PgaReport => kernels_pga::PgaReport,
+    /// projective GA, Moller-Trumbore with its determinants as joins of ideal points.
+    PgaMt => kernels_pga::PgaMt,
+    /// projective GA, the frame method: the triangle's plane and two barycentric planes.
+    PgaFrame => kernels_pga::PgaFrame,
+    /// projective GA, watertight: vertices seen along the ray by two planes of its pencil.
+    PgaWatertight => kernels_pga::PgaWatertight,
+    /// projective GA, Plücker lines: each edge test the join `line & line`.
+    PgaPlucker => kernels_pga::PgaPlucker,
 }
 
 impl Backend {
