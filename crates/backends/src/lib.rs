@@ -381,6 +381,8 @@ mod tests {
             (Backend::G3Frame, Algebra::G3, Method::Frame, none),
             (Backend::G3Report, Algebra::G3, Method::Report, none),
             (Backend::G3Watertight, Algebra::G3, Method::Watertight, wt),
+            (Backend::PgaWatertight, Algebra::Pga, Method::Watertight, wt),
+            (Backend::PgaPlucker, Algebra::Pga, Method::Plucker, none),
         ];
         for (b, algebra, method, guarantees) in expect {
             assert_eq!((b.algebra(), b.method(), b.guarantees()), (algebra, method, guarantees));
@@ -405,6 +407,7 @@ mod tests {
         let watertight = Backend::cell(Method::Watertight, Algebra::G3);
         assert_eq!(watertight, Some(Backend::G3WatertightCell));
         assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
+        assert_eq!(Backend::cell(Method::Frame, Algebra::Pga), Some(Backend::PgaFrame));
         for (i, b) in Backend::ALL.into_iter().enumerate() {
             assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");
             // A variant stands beside its cell, never alone.

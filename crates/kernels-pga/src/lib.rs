@@ -28,9 +28,9 @@
 //! |---|---|---|---|---|---|
 //! | report | [`PgaReport`] (`"pga-report"`) | [`report`] | `la-report` | 3 points: 48 B / 96 B | closed |
 //! | mt | [`PgaMt`] (`"pga-mt"`) | [`mt`] | `la-mt` | a point, 2 ideal points: 48 B / 96 B | closed |
-//! | frame | [`PgaFrame`] (`"pga-frame"`) | [`frame`] | `la-frame` | 3 planes: 48 B / 96 B | closed |
+//! | frame | [`PgaFrame`] (`"pga-frame"`) | [`frame`] | `la-frame` | a point, 3 planes: 64 B / 128 B | closed |
 //! | watertight | [`PgaWatertight`] (`"pga-watertight"`) | [`watertight`] | `la`, `g3-watertight` | 3 points, a plane: 64 B / 128 B | tie rule, no cracks |
-//! | plucker | [`PgaPlucker`] (`"pga-plucker"`) | [`plucker`] | `la-plucker` | 3 lines, a plane: 88 B / 176 B | closed |
+//! | plucker | [`PgaPlucker`] (`"pga-plucker"`) | [`plucker`] | `la-plucker` | 3 lines, a point, a plane: 104 B / 208 B | closed |
 //!
 //! In each: the ray is the join `O & D` of its origin and the ideal point of its direction
 //! where the method needs a line, `t` is read from the triangle's plane (its incidence with

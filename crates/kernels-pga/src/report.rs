@@ -26,12 +26,13 @@
 //!    edge's line through the origin `E = E123 & (end - start)`, the planes it spans with
 //!    the ideal points `x - start` and `third - start`, whose normals are `la-report`'s
 //!    `(end - start) × (x - start)` and `(end - start) × (third - start)` (and whose `e0`
-//!    parts are 0), and `s = (E & x) | (E & third)` (the inner product of two planes is the dot
-//!    product of their normals): `s >= 0` puts `x` on the inner side, edges closed. Each is tested
-//!    before the next is computed.
-//! 4. **Barycentrics from the same planes.** `E & x = λ (E & third)` up to the `e0` part, `λ`
-//!    the weight of the vertex opposite the edge, so `u = s_ac / ((E_ac & B) | (E_ac & B))`,
-//!    `v = s_ab / ((E_ab & C) | (E_ab & C))`, finite or a miss.
+//!    parts are 0), and `s = (E & (x - start)) | (E & (third - start))` (the inner product of
+//!    two planes is the dot product of their normals): `s >= 0` puts `x` on the inner side,
+//!    edges closed. Each is tested before the next is computed.
+//! 4. **Barycentrics from the same planes.** `E & (x - start) = λ (E & (third - start))`, `λ`
+//!    the weight of the vertex opposite the edge, so `λ = s / |E & (third - start)|²`:
+//!    `u = s_ac / |R_ac|²`, `v = s_ab / |R_ab|²` (`R` the reference plane of the edge, `|R|²`
+//!    its `norm_squared`, `R | R`), finite or a miss.
 //!
 //! # Per-triangle data, cost, tie rule
 //!
