@@ -168,6 +168,16 @@ registry! {
     G3WatertightCell => kernels_g3::G3WatertightCell,
     /// geometric algebra, Plücker lines as direction vectors and moment bivectors.
     G3Plucker => kernels_g3::G3Plucker,
+    /// projective GA, the report's method step by step: join, meet, edge planes.
+    PgaReport => kernels_pga::PgaReport,
+    /// projective GA, Moller-Trumbore with its determinants as joins of ideal points.
+    PgaMt => kernels_pga::PgaMt,
+    /// projective GA, the frame method: the triangle's plane and two barycentric planes.
+    PgaFrame => kernels_pga::PgaFrame,
+    /// projective GA, watertight: vertices seen along the ray by two planes of its pencil.
+    PgaWatertight => kernels_pga::PgaWatertight,
+    /// projective GA, Plücker lines: each edge test the join `line & line`.
+    PgaPlucker => kernels_pga::PgaPlucker,
 }
 
 impl Backend {
@@ -371,6 +381,8 @@ mod tests {
             (Backend::G3Frame, Algebra::G3, Method::Frame, none),
             (Backend::G3Report, Algebra::G3, Method::Report, none),
             (Backend::G3Watertight, Algebra::G3, Method::Watertight, wt),
+            (Backend::PgaWatertight, Algebra::Pga, Method::Watertight, wt),
+            (Backend::PgaPlucker, Algebra::Pga, Method::Plucker, none),
         ];
         for (b, algebra, method, guarantees) in expect {
             assert_eq!((b.algebra(), b.method(), b.guarantees()), (algebra, method, guarantees));
@@ -395,6 +407,7 @@ mod tests {
         let watertight = Backend::cell(Method::Watertight, Algebra::G3);
         assert_eq!(watertight, Some(Backend::G3WatertightCell));
         assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
+        assert_eq!(Backend::cell(Method::Frame, Algebra::Pga), Some(Backend::PgaFrame));
         for (i, b) in Backend::ALL.into_iter().enumerate() {
             assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");
             // A variant stands beside its cell, never alone.
