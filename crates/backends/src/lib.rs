@@ -168,6 +168,12 @@ registry! {
     G3WatertightCell => kernels_g3::G3WatertightCell,
     /// geometric algebra, Plücker lines as direction vectors and moment bivectors.
     G3Plucker => kernels_g3::G3Plucker,
+    /// conformal GA, Moller-Trumbore with its determinants as outer products of directions.
+    CgaMt => kernels_cga::CgaMt,
+    /// conformal GA, the frame method: the plane and reciprocal frame as dual planes.
+    CgaFrame => kernels_cga::CgaFrame,
+    /// conformal GA, the report's steps with conformal planes, lines and flat points.
+    CgaReport => kernels_cga::CgaReport,
 }
 
 impl Backend {
@@ -394,7 +400,7 @@ mod tests {
         assert_eq!(Backend::cell(Method::Frame, Algebra::G3), Some(Backend::G3FrameCell));
         let watertight = Backend::cell(Method::Watertight, Algebra::G3);
         assert_eq!(watertight, Some(Backend::G3WatertightCell));
-        assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
+        assert_eq!(Backend::cell(Method::Report, Algebra::Cga), Some(Backend::CgaReport));
         for (i, b) in Backend::ALL.into_iter().enumerate() {
             assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");
             // A variant stands beside its cell, never alone.
