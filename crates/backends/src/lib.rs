@@ -174,6 +174,8 @@ registry! {
     CgaFrame => kernels_cga::CgaFrame,
     /// conformal GA, the report's steps with conformal planes, lines and flat points.
     CgaReport => kernels_cga::CgaReport,
+    /// conformal GA, Plücker coordinates as flat lines, sides from their regressive product.
+    CgaPlucker => kernels_cga::CgaPlucker,
 }
 
 impl Backend {

@@ -12,7 +12,7 @@
 //! the scene by a power of two scales every value exactly.
 
 use ga::Scalar;
-use ga::cga::Vector;
+use ga::cga::{Trivector, Vector};
 
 /// The Euclidean vector `x` (no `e4`, `e5` part).
 #[inline(always)]
@@ -26,6 +26,14 @@ pub(crate) fn point<T: Scalar>(x: Vector<T>) -> Vector<T> {
     Vector::E_O + x
 }
 
+/// The flat line through `x` with direction `d`: `up(x) ∧ d ∧ e∞ = (eₒ + x) ∧ d ∧ e∞`, whose
+/// coefficients are the moment `x ∧ d` (on `e_ij4` and `e_ij5`, equal) and the direction (on
+/// `e_i45`).
+#[inline(always)]
+pub(crate) fn line<T: Scalar>(x: Vector<T>, d: Vector<T>) -> Trivector<T> {
+    point(x) ^ d ^ Vector::E_INF
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -36,6 +44,9 @@ mod tests {
         let d = vector([0.25, 1.0, -4.0]);
         let up = Vector::up(ga::g3::Vector::new(3.0, -2.0, 0.5));
         assert_eq!(point(x) ^ Vector::E_INF, up ^ Vector::E_INF);
-        assert_eq!(point(x) ^ d ^ Vector::E_INF, up ^ d ^ Vector::E_INF);
+        assert_eq!(line(x, d), up ^ d ^ Vector::E_INF);
+        // The flat line of two points is the line through them.
+        let y = vector([3.25, -1.0, -3.5]);
+        assert_eq!(point(x) ^ point(y) ^ Vector::E_INF, line(x, d));
     }
 }

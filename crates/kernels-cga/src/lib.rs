@@ -48,10 +48,12 @@
 mod flat;
 pub mod frame;
 pub mod mt;
+pub mod plucker;
 pub mod report;
 
 pub use frame::{CgaFrame, CgaFramePrim};
 pub use mt::{CgaMt, CgaMtPrim};
+pub use plucker::{CgaPlucker, CgaPluckerPrim, CgaPluckerRay};
 pub use report::{CgaReport, CgaReportPrim};
 
 /// Re-exported from the seam: whether a triangle has zero area, decided exactly.

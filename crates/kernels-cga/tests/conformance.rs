@@ -2,7 +2,7 @@
 //! guarantees it declares.
 
 use intersect::conformance::check_all;
-use kernels_cga::{CgaFrame, CgaMt, CgaReport};
+use kernels_cga::{CgaFrame, CgaMt, CgaPlucker, CgaReport};
 
 #[test]
 fn mt_conforms() {
@@ -20,4 +20,10 @@ fn frame_conforms() {
 fn report_conforms() {
     check_all::<CgaReport<f32>>();
     check_all::<CgaReport<f64>>();
+}
+
+#[test]
+fn plucker_conforms() {
+    check_all::<CgaPlucker<f32>>();
+    check_all::<CgaPlucker<f64>>();
 }
