@@ -176,6 +176,8 @@ registry! {
     CgaReport => kernels_cga::CgaReport,
     /// conformal GA, Plücker coordinates as flat lines, sides from their regressive product.
     CgaPlucker => kernels_cga::CgaPlucker,
+    /// conformal GA, watertight: each edge's points outer the ray's flat line, exact signs.
+    CgaWatertight => kernels_cga::CgaWatertight,
 }
 
 impl Backend {

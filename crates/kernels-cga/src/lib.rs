@@ -26,10 +26,8 @@
 //! | report | [`CgaReport`] (`"cga-report"`) | [`report`] | plane `A ∧ B ∧ C ∧ e∞`, ray line, their meet (a flat point), edge tests as inner products of planes through the edge |
 //! | mt | [`CgaMt`] (`"cga-mt"`) | [`mt`] | determinants as outer products of directions |
 //! | frame | [`CgaFrame`] (`"cga-frame"`) | [`frame`] | the plane and the reciprocal frame as dual planes `m + δ e∞` evaluated at the ray's point |
+//! | watertight | [`CgaWatertight`] (`"cga-watertight"`) | [`watertight`] | edge tests as the outer products `P ∧ Q ∧ L` of the edge's points with the ray's flat line, in the ray's frame; `g3-watertight`'s exact fallback and tie rule |
 //! | plucker | [`CgaPlucker`] (`"cga-plucker"`) | [`plucker`] | the ray's and the edges' flat lines, sides from their regressive product |
-//!
-//! There is no watertight cell: see the `watertight` row in the report of the helper that
-//! wrote this crate (in `SUMMARY.md`) and [`plucker`]'s "Why it is not watertight".
 //!
 //! # Precision
 //!
@@ -50,11 +48,13 @@ pub mod frame;
 pub mod mt;
 pub mod plucker;
 pub mod report;
+pub mod watertight;
 
 pub use frame::{CgaFrame, CgaFramePrim};
 pub use mt::{CgaMt, CgaMtPrim};
 pub use plucker::{CgaPlucker, CgaPluckerPrim, CgaPluckerRay};
 pub use report::{CgaReport, CgaReportPrim};
+pub use watertight::{CgaWatertight, CgaWatertightPrim, CgaWatertightRay};
 
 /// Re-exported from the seam: whether a triangle has zero area, decided exactly.
 pub use intersect::is_degenerate;
