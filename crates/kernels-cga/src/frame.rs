@@ -50,6 +50,8 @@ use ga::Scalar;
 use ga::cga::Vector;
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
+use kernels_g3::frame::{decide, hit, occluded};
+
 use crate::flat::{point, vector};
 use crate::{cross64, is_degenerate, round64};
 
@@ -131,50 +133,26 @@ impl<T: Scalar> Intersector for CgaFrame<T> {
         _: &(),
         t_max: T,
     ) -> Option<TriangleHit<T>> {
-        let [num, den, u, v] = candidate(prim, ray, t_max)?;
-        let inv_den = den.recip();
-        let t = num * inv_den;
-        distance_ok(t, t_max).then(|| TriangleHit { t, u: u * inv_den, v: v * inv_den })
+        hit(decide(undivided(prim, ray), t_max)?, t_max)
     }
 
     #[inline(always)]
     fn occludes(&self, prim: &CgaFramePrim<T>, ray: &Ray<T>, _: &(), t_max: T) -> bool {
-        candidate(prim, ray, t_max)
-            .is_some_and(|[num, den, ..]| distance_ok(num * den.recip(), t_max))
+        decide(undivided(prim, ray), t_max).is_some_and(|c| occluded(&c, t_max))
     }
 }
 
-/// The undivided `[num, den, U, V]` of a ray that passes the edge and distance tests.
+/// The undivided `[num, den, U, V]` of the derivation, from the dual planes; the decisions
+/// on them (the edges as one branch, then `0 < t <= t_max` before the division, loosened by
+/// 4 ulps of 1) are `la-frame`'s and `g3-frame`'s, in the shared
+/// [`kernels_g3::frame::decide`].
 #[inline(always)]
-fn candidate<T: Scalar>(prim: &CgaFramePrim<T>, ray: &Ray<T>, t_max: T) -> Option<[T; 4]> {
+fn undivided<T: Scalar>(prim: &CgaFramePrim<T>, ray: &Ray<T>) -> [T; 4] {
     let CgaFramePrim { a, nu, mu_b, mu_c } = *prim;
     let (o, d) = (point(vector(ray.origin) - a), vector(ray.dir));
     // -(O · π) = π's value at a - o: the dual planes evaluated at the ray's origin.
     let (num, den) = (-(o | nu), d | nu);
     let u = num * (d | mu_b) - den * -(o | mu_b);
     let v = num * (d | mu_c) - den * -(o | mu_c);
-
-    // The edges as one branch; σ taken off by an exact product with ±1.
-    let abs_den = den.abs();
-    let sign = T::ONE.copy_sign(den);
-    let (u_s, v_s) = (u * sign, v * sign);
-    let w = abs_den - (u_s + v_s);
-    let lesser = |x: T, y: T| if x < y { x } else { y };
-    let least = lesser(lesser(u_s, v_s), w);
-    if least < T::ZERO || least.is_nan() {
-        return None;
-    }
-
-    // 0 < t <= t_max before the division, loosened by 4 ulps of 1.
-    let num_s = num * sign;
-    let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
-    if !(num_s > T::ZERO && num_s <= t_max * abs_den * slack) {
-        return None;
-    }
-    Some([num, den, u, v])
-}
-
-#[inline(always)]
-fn distance_ok<T: Real>(t: T, t_max: T) -> bool {
-    t > T::ZERO && t <= t_max && t.is_finite()
+    [num, den, u, v]
 }

@@ -38,8 +38,11 @@
 //! a dual plane, and for those `up(x)` can be replaced by `eₒ + x` exactly (see the private
 //! `flat` module), whose `e4`, `e5` coefficients are `∓½`; and they measure from a vertex or
 //! from the ray's origin, as the other cells do, so coordinates are as small as the
-//! triangle's distance from the ray. The agreement tests (`tests/accuracy.rs` and
-//! `backends`' `tests/rows.rs`) bound the error of `t` at the tolerance of the LA cells.
+//! triangle's distance from the ray. The agreement test of the matrix (`backends`'
+//! `tests/rows.rs`: each cell against its row's LA cell on 20,000 random rays) finds the
+//! same worst relative error of `t` as the LA cell of the row, within a factor 1.6, in both
+//! precisions, and the conformance kit's translation sweep (scenes moved `2e3` scene sizes
+//! from the origin) holds every cell to its `t` tolerance.
 
 #![deny(missing_docs)]
 

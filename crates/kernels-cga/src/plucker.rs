@@ -58,6 +58,8 @@ use ga::Scalar;
 use ga::cga::{Trivector, Vector};
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
+use kernels_g3::watertight::finish;
+
 use crate::flat::{line, point, vector};
 use crate::{cross64, is_degenerate, round64};
 
@@ -153,26 +155,12 @@ impl<T: Scalar> Intersector for CgaPlucker<T> {
         if !(front | back) {
             return None;
         }
-        let det = w_a + w_b + w_c;
-        if det == zero {
-            return None;
-        }
-
-        // t = ((a - o) . n) / (d . n) from the dual plane, tested before dividing.
+        // t = ((a - o) . n) / (d . n) from the dual plane: `det`, then the distance tested
+        // before dividing, then the barycentrics, `la-plucker`'s tail (shared with
+        // `g3-watertight`).
         let num = -(point(vector(ray.origin) - prim.a) | prim.nu);
         let den = vector(ray.dir) | prim.nu;
-        let num_s = num * T::ONE.copy_sign(den);
-        let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
-        if !(num_s > zero && num_s <= t_max * den.abs() * slack) {
-            return None;
-        }
-        let t = num / den;
-        let inv_det = det.recip();
-        (t > zero && t <= t_max && t.is_finite() && det.is_finite()).then(|| TriangleHit {
-            t,
-            u: w_b * inv_det,
-            v: w_c * inv_det,
-        })
+        finish([w_a, w_b, w_c], num, den, t_max)
     }
 }
 
