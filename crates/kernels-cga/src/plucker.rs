@@ -15,7 +15,9 @@
 //!
 //! `la-plucker`'s permuted inner product, which is zero exactly when the lines meet (or are
 //! parallel) and whose sign says on which side of one the other passes. `w` is read as
-//! `-((L₁ & L₂) · eₒ)` (`e∞ · eₒ = -1`). With the ray's line `L = up(o) ∧ d ∧ e∞` (per ray)
+//! `-((L₁ & L₂) · e5)` (`e∞ · e5 = e5² = -1`: exact, where `-(X · eₒ)`, the same value,
+//! would multiply by `∓½` and lose the last bit of subnormal values, leaving a zero side
+//! beside a non-zero `det`). With the ray's line `L = up(o) ∧ d ∧ e∞` (per ray)
 //! and the edges' lines `E_a = up(b) ∧ (c - b) ∧ e∞`, `E_b` (from `c` to `a`), `E_c` (from `a`
 //! to `b`) (per triangle), the ray passes through the closed triangle exactly when
 //! `w_a, w_b, w_c` are all `>= 0` or all `<= 0`, and they are the barycentric weights times
@@ -36,10 +38,9 @@
 //!   is stored twice: the algebra's line has these blades), `a` and `ν` as five-coefficient
 //!   [`Vector`]s: 40 scalars, 160 B in `f32`, 320 B in `f64` (`la-plucker`: 128 B, 192 B).
 //! - Per ray: the ray's flat line (two outer products).
-//! - Per test: 3 regressive products `Trivector & Trivector` of which the `e4`, `e5`
-//!   coefficients are read (6 multiplies and 5 additions each, 2 per line pair: twice
-//!   `la-plucker`'s permuted inner product, because the moment is stored on both `e_ij4`
-//!   and `e_ij5`), each contracted with `eₒ` (2 multiplies by `∓½`, 1 addition); the sign
+//! - Per test: 3 regressive products `Trivector & Trivector` of which the `e5` coefficient
+//!   is read (6 multiplies and 5 additions: `la-plucker`'s permuted inner product), each
+//!   contracted with `e5` (a sign change); the sign
 //!   tests; 2 additions (`det`); `o - a`, `eₒ +`, 2 inner products of five coefficients
 //!   (`num`, `den`); the distance test; a division and a reciprocal for a hit.
 //!
@@ -147,7 +148,7 @@ impl<T: Scalar> Intersector for CgaPlucker<T> {
         t_max: T,
     ) -> Option<TriangleHit<T>> {
         // The side of each edge's line the ray's line passes: L & E = w e∞.
-        let side = |edge: Trivector<T>| -((rd.line & edge) | Vector::E_O);
+        let side = |edge: Trivector<T>| -((rd.line & edge) | Vector::E5);
         let [w_a, w_b, w_c] = prim.edges.map(side);
         let zero = T::ZERO;
         let front = (w_a >= zero) & (w_b >= zero) & (w_c >= zero);
@@ -179,6 +180,7 @@ mod tests {
         let want = dot(d, m2) + dot(e, m1);
         let meet = line(vector(p), vector(d)) & line(vector(q), vector(e));
         assert_eq!(meet, Vector::E_INF * want);
+        assert_eq!(-(meet | Vector::E5), want);
         assert_eq!(-(meet | Vector::E_O), want);
     }
 }
