@@ -178,6 +178,16 @@ registry! {
     PgaWatertight => kernels_pga::PgaWatertight,
     /// projective GA, Plücker lines: each edge test the join `line & line`.
     PgaPlucker => kernels_pga::PgaPlucker,
+    /// conformal GA, the report's steps with conformal planes, lines and flat points.
+    CgaReport => kernels_cga::CgaReport,
+    /// conformal GA, Moller-Trumbore with its determinants as outer products of directions.
+    CgaMt => kernels_cga::CgaMt,
+    /// conformal GA, the frame method: the plane and reciprocal frame as dual planes.
+    CgaFrame => kernels_cga::CgaFrame,
+    /// conformal GA, watertight: each edge's points outer the ray's flat line, exact signs.
+    CgaWatertight => kernels_cga::CgaWatertight,
+    /// conformal GA, Plücker coordinates as flat lines, sides from their regressive product.
+    CgaPlucker => kernels_cga::CgaPlucker,
 }
 
 impl Backend {
@@ -406,7 +416,7 @@ mod tests {
         assert_eq!(Backend::cell(Method::Frame, Algebra::G3), Some(Backend::G3FrameCell));
         let watertight = Backend::cell(Method::Watertight, Algebra::G3);
         assert_eq!(watertight, Some(Backend::G3WatertightCell));
-        assert_eq!(Backend::cell(Method::Report, Algebra::Cga), None);
+        assert_eq!(Backend::cell(Method::Report, Algebra::Cga), Some(Backend::CgaReport));
         assert_eq!(Backend::cell(Method::Frame, Algebra::Pga), Some(Backend::PgaFrame));
         for (i, b) in Backend::ALL.into_iter().enumerate() {
             assert!(b.variant().is_none_or(|v| !v.is_empty()), "{b:?}");

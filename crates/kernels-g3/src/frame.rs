@@ -269,7 +269,7 @@ fn occludes<T: Float>(prim: &G3FramePrim<T>, ray: &Ray<T>, t_max: T) -> bool {
 
 /// The hit of a [`Candidate`]: one division, then `0 < t <= t_max` on the divided `t`.
 #[inline(always)]
-pub(crate) fn hit<T: Float>(c: Candidate<T>, t_max: T) -> Option<TriangleHit<T>> {
+pub fn hit<T: ga::Scalar>(c: Candidate<T>, t_max: T) -> Option<TriangleHit<T>> {
     let inv_den = T::ONE / c.den;
     let t = c.num * inv_den;
     hit_distance_ok(t, t_max).then(|| TriangleHit { t, u: c.u * inv_den, v: c.v * inv_den })
@@ -277,12 +277,13 @@ pub(crate) fn hit<T: Float>(c: Candidate<T>, t_max: T) -> Option<TriangleHit<T>>
 
 /// Whether [`hit`] finds the hit, without the barycentrics (the same rounded `t`).
 #[inline(always)]
-pub(crate) fn occluded<T: Float>(c: &Candidate<T>, t_max: T) -> bool {
+pub fn occluded<T: ga::Scalar>(c: &Candidate<T>, t_max: T) -> bool {
     hit_distance_ok(c.num * (T::ONE / c.den), t_max)
 }
 
-/// The undivided hit: `t = num / den`, `u = U / den`, `v = V / den`.
-pub(crate) struct Candidate<T> {
+/// The undivided hit: `t = num / den`, `u = U / den`, `v = V / den` (made by [`decide`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Candidate<T> {
     num: T,
     den: T,
     u: T,
@@ -298,9 +299,10 @@ fn candidate<T: Float>(prim: &G3FramePrim<T>, ray: &Ray<T>, t_max: T) -> Option<
 
 /// The frame method's decisions on its undivided values `[num, den, U, V]`, in its order: the
 /// edges as one branch, then the distance (see the module documentation). Shared by the
-/// frame/G3 cell ([`crate::G3FrameCell`]), which computes the four values in GA types.
+/// frame/G3 cell ([`crate::G3FrameCell`]), which computes the four values in GA types, and
+/// the frame/CGA cell (`kernels_cga::CgaFrame`), which computes them with dual planes.
 #[inline(always)]
-pub(crate) fn decide<T: Float>([num, den, u, v]: [T; 4], t_max: T) -> Option<Candidate<T>> {
+pub fn decide<T: ga::Scalar>([num, den, u, v]: [T; 4], t_max: T) -> Option<Candidate<T>> {
     let abs_den = den.abs();
 
     // The edges: σU >= 0, σV >= 0 and σ(U + V) <= |den| as one branch (see the module
@@ -330,7 +332,7 @@ pub(crate) fn decide<T: Float>([num, den, u, v]: [T; 4], t_max: T) -> Option<Can
 
 /// `0 < t <= t_max` and `t` finite, on the divided `t`.
 #[inline(always)]
-fn hit_distance_ok<T: Float>(t: T, t_max: T) -> bool {
+fn hit_distance_ok<T: ga::Scalar>(t: T, t_max: T) -> bool {
     t > T::ZERO && t <= t_max && t.is_finite()
 }
 

@@ -264,9 +264,10 @@ fn intersect<T: Float>(
 /// The edge decisions of the method, in its order, on the three edge values `w` (`w[j]` the
 /// edge opposite vertex `j`), with `points` the vertices' coordinates in the plane orthogonal
 /// to the ray for the exact fallback: the values to divide by, or `None` (outside). Shared
-/// by the watertight/G3 cell ([`crate::G3WatertightCell`]).
+/// by the watertight/G3 cell ([`crate::G3WatertightCell`]) and the watertight/CGA cell
+/// (`kernels_cga::CgaWatertight`): the same decisions and tie rule along the row.
 #[inline(always)]
-pub(crate) fn decide_edges<T: Float>(
+pub fn decide_edges<T: ga::Scalar>(
     w: [T; 3],
     points: impl FnOnce() -> [[T; 2]; 3],
 ) -> Option<[T; 3]> {
@@ -295,7 +296,7 @@ pub(crate) fn decide_edges<T: Float>(
 /// The rest of the method after the edges: `det`, the distance `t = num / den` tested before
 /// dividing, then the barycentrics `w_b / det`, `w_c / det`.
 #[inline(always)]
-pub(crate) fn finish<T: Float>(
+pub fn finish<T: ga::Scalar>(
     [w_a, w_b, w_c]: [T; 3],
     num: T,
     den: T,
@@ -343,7 +344,7 @@ fn dot<T: Float>(x: Vector<T>, y: Vector<T>) -> T {
 /// ray is outside, or for non-finite input, where no sign is meaningful.
 #[cold]
 #[inline(never)]
-pub(crate) fn inside_exact<T: Float>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
+fn inside_exact<T: ga::Scalar>(p: [[T; 2]; 3]) -> Option<[T; 3]> {
     if !p.iter().flatten().all(|x| x.is_finite()) {
         return None;
     }
