@@ -60,21 +60,22 @@
 //!    rule and exact fallback for watertight methods, the same `t_max` slack.
 //! 4. **Per-test code in the cell's own algebra types**: glam `Vec3A` / `DVec3` for
 //!    [`Algebra::La`], `ga::g3` types and their operators (`^`, `|`, `*`, `&`) for
-//!    [`Algebra::G3`], with no hand intrinsics and no per-test code on raw arrays or lanes;
-//!    what the generated products and the compiler make of that is what is measured, so that
-//!    the cost of writing a tracer in the algebra is the cost reported.
+//!    [`Algebra::G3`], `ga::pga` planes, lines, points and motors for [`Algebra::Pga`],
+//!    `ga::cga` vectors, flats and dual planes for [`Algebra::Cga`], with no hand intrinsics and no
+//!    per-test code on raw arrays or lanes; what the generated products and the compiler make of
+//!    that is what is measured, so that the cost of writing a tracer in the algebra is the cost
+//!    reported.
 //!
 //! # Adding a back end
 //!
-//! 1. Write the kernel in a kernel crate (`kernels-la`, `kernels-g3`, or a new one added to this
-//!    crate's dependencies): a type generic over `f32` and `f64` with a `new()` constructor,
-//!    implementing [`Intersector`] with its `NAME` (the `--backend` name), `ALGEBRA`, `METHOD`,
-//!    `GUARANTEES` and `VARIANT` (`None` for a cell), and its own tests (one call per
-//!    precision to the conformance checks of `intersect`, and a call in `kernels-la`'s
+//! 1. Write the kernel in a kernel crate (`kernels-la`, `kernels-g3`, `kernels-pga`, `kernels-cga`,
+//!    or a new one added to this crate's dependencies): a type generic over `f32` and `f64` with a
+//!    `new()` constructor, implementing [`Intersector`] with its `NAME` (the `--backend` name),
+//!    `ALGEBRA`, `METHOD`, `GUARANTEES` and `VARIANT` (`None` for a cell), and its own tests (one
+//!    call per precision to the conformance checks of `intersect`, and a call in `kernels-la`'s
 //!    `tests/agreement.rs` or `kernels-g3`'s `tests/accuracy.rs`). The kernel's module
-//!    documentation states what the [rules for a fair row](#rules-for-a-fair-row) ask: the
-//!    method and which cells it mirrors, the bytes per triangle, the operations per test and
-//!    the tie rule.
+//!    documentation states what the [rules for a fair row](#rules-for-a-fair-row) ask: the method
+//!    and which cells it mirrors, the bytes per triangle, the operations per test and the tie rule.
 //! 2. Add one entry to the `registry!` list in this file: a one-line description (the
 //!    variant's doc and the `--help` text), the variant, and the kernel's path. Every test
 //!    that loops over [`Backend::ALL`] then runs it, `tests/rows.rs` among them (each cell
