@@ -1,7 +1,8 @@
-//! Back ends timed in alternating processes: the bunny's primary rays (closest and any hit)
-//! and incoherent rays, one thread, every back end and precision, each measured in a fresh
-//! process per round, with the order of the back ends rotated from round to round, and
-//! Embree 4 beside them when it is installed. Writes `results/interleaved.csv`.
+//! Back ends timed in alternating processes: primary rays (closest and any hit) and
+//! incoherent rays on two meshes and views (the Stanford bunny, and the Utah teapot from
+//! `../shared/meshes/` framed by its own camera), one thread, every back end and precision, each
+//! measured in a fresh process per round, with the order of the back ends rotated from round to
+//! round, and Embree 4 beside them when it is installed. Writes `results/interleaved.csv`.
 //!
 //! **Why.** On the machine of `results/` the time of the same binary on the same rays moves by
 //! up to ±10% between processes (seen: 4.9 to 6.0 Mrays/s for `la` f32 incoherent rays in ten
@@ -12,8 +13,8 @@
 //! measurement, alternated, and the median over rounds make the comparison of back ends fair
 //! to each of them. The throughput bench remains the table of every scene and thread count.
 //!
-//! Each child process loads the bunny, builds one back end's BVH, traces each ray set three
-//! times and prints the best Mrays/s of the three (the first trace warms the caches). The
+//! Each child process loads both meshes, builds one back end's BVH of each, traces each ray set
+//! three times and prints the best Mrays/s of the three (the first trace warms the caches). The
 //! parent runs `ROUNDS` rounds and writes, per back end, precision and ray set, the median,
 //! minimum and maximum over the rounds, and the ratio of `la`'s median Mrays/s to the back
 //! end's (time relative to `la`, as in `throughput.csv`).
@@ -22,15 +23,15 @@
 //! embreex`; another interpreter with `WEDGE_PYTHON`), each round also runs
 //! `benches/embree/trace.py` in its own process, on the same triangles and the same rays
 //! rounded to `f32` (written to `embree-input/` under the criterion directory): Embree 4, one
-//! `rtcIntersect1`/`rtcOccluded1` call per ray, one thread. It gives two rows: `embree4`, as
-//! measured, and `embree4-net`, with the binding's own cost per ray taken off (the Cython loop
-//! and the call, timed on an empty scene with the same rays: 10 to 13 ns on the machine of
-//! `results/`), a bound in Embree's favour. The targets were measured on another
-//! machine; these rows are the same-machine comparison. The project does not depend on
-//! Embree: without `embreex` the rows are left out, with a note.
+//! `rtcIntersect1`/`rtcOccluded1` call per ray, one thread, on the bunny. It gives two rows:
+//! `embree4`, as measured, and `embree4-net`, with the binding's own cost per ray taken off (the
+//! Cython loop and the call, timed on an empty scene with the same rays: 10 to 13 ns on the machine
+//! of `results/`), a bound in Embree's favour. The targets were measured on another
+//! machine; these rows are the same-machine comparison. The project does not depend on Embree:
+//! without `embreex` the rows are left out, with a note.
 //!
-//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 3 minutes). With
-//! `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
+//! Run: `cargo bench -p wedge-benches --bench interleaved` (about 25 minutes for 22 back ends).
+//! With `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
 //! the criterion directory (a smoke test).
 
 use std::fs::File;
@@ -48,12 +49,14 @@ use serde::Serialize;
 use wedge_benches::throughput::rays::{
     INCOHERENT_SEED, Query, RaySet, incoherent_rays, primary_rays,
 };
-use wedge_benches::throughput::scenes::bunny;
+use wedge_benches::throughput::scenes::{bunny, shared_mesh};
 use wedge_benches::throughput::trace::trace;
 use wedge_benches::{criterion_dir, machine, median, quick_mode, results_dir, write_csv};
 
 /// Rounds of a full run; each round runs every back end and precision once.
-const ROUNDS: usize = 9;
+const ROUNDS: usize = 7;
+/// The scenes, by the name the CSV rows use: the first is also Embree's.
+const SCENES: [&str; 2] = ["bunny", "teapot"];
 /// Traces of each ray set per process; the best one counts.
 const REPEATS: usize = 3;
 /// The ray sets compared: the three columns of the table.
@@ -81,6 +84,11 @@ struct Row {
     /// `la`'s median Mrays/s over this back end's (time relative to `la`).
     ratio_to_la: f64,
     cpu: String,
+}
+
+/// The meshes of [`SCENES`], in that order.
+fn meshes() -> Vec<Mesh> {
+    vec![bunny(), shared_mesh("teapot.obj")]
 }
 
 /// The rays of the comparison, in `f64`.
@@ -133,9 +141,11 @@ fn child(spec: &str) -> Result<(), String> {
     let backend = Backend::from_name(backend).ok_or(format!("invalid variant: {backend}"))?;
     let precision =
         Precision::from_name(precision).ok_or(format!("invalid variant: {precision}"))?;
-    let mesh = bunny();
-    let sets = ray_sets(&mesh, quick_mode());
-    let figures = dispatch(backend, precision, Measure { mesh: &mesh, sets: &sets });
+    let mut figures = Vec::new();
+    for mesh in meshes() {
+        let sets = ray_sets(&mesh, quick_mode());
+        figures.extend(dispatch(backend, precision, Measure { mesh: &mesh, sets: &sets }));
+    }
     println!("{}", figures.iter().map(f64::to_string).collect::<Vec<_>>().join(" "));
     Ok(())
 }
@@ -234,8 +244,9 @@ fn parent() -> Result<(), String> {
     if !embree_args.is_empty() {
         spec_names.push((EMBREE_NET.to_owned(), "f32".to_owned()));
     }
-    // figures[spec][set] over the rounds.
-    let mut figures = vec![vec![Vec::new(); SETS.len()]; spec_names.len()];
+    // figures[spec][scene * SETS.len() + set] over the rounds (Embree's: the first scene's).
+    let series = SCENES.len() * SETS.len();
+    let mut figures = vec![vec![Vec::new(); series]; spec_names.len()];
     for round in 0..rounds {
         for k in 0..measured {
             let i = (k + round) % measured;
@@ -258,17 +269,25 @@ fn parent() -> Result<(), String> {
     }
     let cpu = machine();
     // Each series sorted (by `median`): its minimum first and its maximum last.
-    let medians: Vec<Vec<f64>> =
-        figures.iter_mut().map(|sets| sets.iter_mut().map(|v| median(v)).collect()).collect();
+    let medians: Vec<Vec<f64>> = figures
+        .iter_mut()
+        .map(|sets| {
+            sets.iter_mut().map(|v| if v.is_empty() { f64::NAN } else { median(v) }).collect()
+        })
+        .collect();
     let mut rows = Vec::new();
     for (i, (b, p)) in spec_names.iter().enumerate() {
         let la = spec_names.iter().position(|(lb, lp)| lb == "la" && lp == p).unwrap_or(i);
-        for (s, set) in SETS.iter().enumerate() {
+        for s in 0..series {
+            let (scene, set) = (SCENES[s / SETS.len()], SETS[s % SETS.len()]);
             let sorted = &figures[i][s];
+            if sorted.is_empty() {
+                continue;
+            }
             rows.push(Row {
                 backend: b.clone(),
                 precision: p.clone(),
-                scene: "bunny",
+                scene,
                 ray_set: set.name(),
                 rounds,
                 median_mrays_per_s: medians[i][s],
@@ -280,14 +299,15 @@ fn parent() -> Result<(), String> {
         }
     }
     println!(
-        "{:<11} {:<4} {:<19} {:>7} {:>7} {:>7} {:>6}",
-        "back end", "prec", "rays", "median", "min", "max", "ratio"
+        "{:<14} {:<4} {:<7} {:<19} {:>7} {:>7} {:>7} {:>6}",
+        "back end", "prec", "scene", "rays", "median", "min", "max", "ratio"
     );
     for r in &rows {
         println!(
-            "{:<11} {:<4} {:<19} {:>7.2} {:>7.2} {:>7.2} {:>6.3}",
+            "{:<14} {:<4} {:<7} {:<19} {:>7.2} {:>7.2} {:>7.2} {:>6.3}",
             r.backend,
             r.precision,
+            r.scene,
             r.ray_set,
             r.median_mrays_per_s,
             r.min_mrays_per_s,
@@ -303,15 +323,5 @@ fn parent() -> Result<(), String> {
 }
 
 fn main() -> ExitCode {
-    let result = match std::env::var(CHILD) {
-        Ok(spec) => child(&spec),
-        Err(_) => parent(),
-    };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    wedge_benches::child_or_parent(CHILD, child, parent)
 }

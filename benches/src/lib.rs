@@ -317,6 +317,28 @@ impl SplitMix64 {
     }
 }
 
+/// The `main` of a bench that measures in child processes of its own binary: with the
+/// environment variable `child_env` set, runs `child` on its value, else `parent`; an error
+/// is printed as one `error:` line and fails the process.
+#[must_use]
+pub fn child_or_parent(
+    child_env: &str,
+    child: fn(&str) -> Result<(), String>,
+    parent: fn() -> Result<(), String>,
+) -> std::process::ExitCode {
+    let result = match std::env::var(child_env) {
+        Ok(spec) => child(&spec),
+        Err(_) => parent(),
+    };
+    match result {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

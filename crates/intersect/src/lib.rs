@@ -95,9 +95,9 @@ pub enum Algebra {
     La,
     /// The geometric algebra G(3,0,0) of Euclidean 3-space (`g3`).
     G3,
-    /// Projective geometric algebra G(3,0,1) (`pga`); no kernel yet.
+    /// Projective geometric algebra G(3,0,1) (`pga`).
     Pga,
-    /// Conformal geometric algebra G(4,1,0) (`cga`); no kernel yet.
+    /// Conformal geometric algebra G(4,1,0) (`cga`).
     Cga,
 }
 

@@ -65,7 +65,9 @@ use ga::Scalar;
 use ga::pga::{Plane, Point};
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
-use crate::{direction, distance_ok, is_degenerate, plane_through, point, round_plane, seen_from};
+use kernels_g3::frame::{decide, hit, occluded};
+
+use crate::{direction, is_degenerate, plane_through, point, round_plane, seen_from};
 
 /// The frame method in PGA (`NAME = "pga-frame"`): the triangle's plane and its two
 /// barycentric planes precomputed, one outer product per barycentric.
@@ -162,44 +164,25 @@ impl<T: Scalar> Intersector for PgaFrame<T> {
         _: &(),
         t_max: T,
     ) -> Option<TriangleHit<T>> {
-        let [num, den, u, v] = candidate(prim, ray, t_max)?;
-        let inv_den = den.recip();
-        let t = num * inv_den;
-        hit_distance_ok(t, t_max).then(|| TriangleHit { t, u: u * inv_den, v: v * inv_den })
+        hit(decide(undivided(prim, ray), t_max)?, t_max)
     }
 
     #[inline(always)]
     fn occludes(&self, prim: &PgaFramePrim<T>, ray: &Ray<T>, _: &(), t_max: T) -> bool {
-        candidate(prim, ray, t_max)
-            .is_some_and(|[num, den, ..]| hit_distance_ok(num * den.recip(), t_max))
+        decide(undivided(prim, ray), t_max).is_some_and(|c| occluded(&c, t_max))
     }
 }
 
-/// The undivided `[num, den, U, V]` if the edge and distance tests pass.
+/// The undivided `[num, den, U, V]` of the derivation, from the planes; the decisions on them
+/// (the edges as one branch, then `0 < t <= t_max` before the division, loosened by 4 ulps
+/// of 1) are `la-frame`'s and `g3-frame`'s, in the shared [`kernels_g3::frame::decide`].
 #[inline(always)]
-fn candidate<T: Scalar>(prim: &PgaFramePrim<T>, ray: &Ray<T>, t_max: T) -> Option<[T; 4]> {
+fn undivided<T: Scalar>(prim: &PgaFramePrim<T>, ray: &Ray<T>) -> [T; 4] {
     let PgaFramePrim { a, plane, b, c } = *prim;
     let o = seen_from(point(ray.origin), a);
     let x = (o & direction(ray.dir)) ^ plane;
     let (num, den) = (-(plane & o), x.weight());
-    let (u, v) = ((b ^ x).e0123, (c ^ x).e0123);
-
-    // The edges as one branch; σ taken off by an exact product with ±1.
-    let abs_den = den.abs();
-    let sign = T::ONE.copy_sign(den);
-    let (u_s, v_s) = (u * sign, v * sign);
-    let w = abs_den - (u_s + v_s);
-    let lesser = |x: T, y: T| if x < y { x } else { y };
-    let least = lesser(lesser(u_s, v_s), w);
-    if least < T::ZERO || least.is_nan() {
-        return None;
-    }
-    distance_ok(num, den, t_max).then_some([num, den, u, v])
-}
-
-#[inline(always)]
-fn hit_distance_ok<T: Real>(t: T, t_max: T) -> bool {
-    t > T::ZERO && t <= t_max && t.is_finite()
+    [num, den, (b ^ x).e0123, (c ^ x).e0123]
 }
 
 #[cfg(test)]

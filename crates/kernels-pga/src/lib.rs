@@ -55,7 +55,6 @@ pub use watertight::{PgaWatertight, PgaWatertightPrim, PgaWatertightRay};
 
 use ga::Scalar;
 use ga::pga::{Line, Plane, Point};
-use intersect::TriangleHit;
 
 /// Re-exported from the seam, where every back end finds it: whether a triangle has zero
 /// area, decided exactly.
@@ -102,33 +101,4 @@ fn round_plane<T: Scalar>(p: Plane<f64>) -> Plane<T> {
 /// `l` rounded once to `T`.
 fn round_line<T: Scalar>(l: Line<f64>) -> Line<T> {
     Line::from_array(l.to_array().map(T::from_f64))
-}
-
-/// The distance test before the division, as every LA cell that tests it undivided:
-/// `0 < σ num <= t_max |den| (1 + 4 ε)` with `σ` the sign of `den`, `t = num / den` (the
-/// slack lets `intersect(.., t_max = hit.t)` find its own hit). NaN fails it.
-#[inline(always)]
-fn distance_ok<T: Scalar>(num: T, den: T, t_max: T) -> bool {
-    let num_s = num * T::ONE.copy_sign(den);
-    let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
-    num_s > T::ZERO && num_s <= t_max * den.abs() * slack
-}
-
-/// The rest of the edge-function methods (watertight, Plücker) once the edges pass:
-/// `det = w_a + w_b + w_c` (`0` is a miss), the distance `t = num / den` tested before the
-/// division, one division, and the barycentrics `w_b / det`, `w_c / det`; a non-finite `t`
-/// or `det` is a miss.
-#[inline(always)]
-fn finish<T: Scalar>([w_a, w_b, w_c]: [T; 3], num: T, den: T, t_max: T) -> Option<TriangleHit<T>> {
-    let det = w_a + w_b + w_c;
-    if det == T::ZERO || !distance_ok(num, den, t_max) {
-        return None;
-    }
-    let t = num / den;
-    let inv_det = det.recip();
-    (t > T::ZERO && t <= t_max && t.is_finite() && det.is_finite()).then(|| TriangleHit {
-        t,
-        u: w_b * inv_det,
-        v: w_c * inv_det,
-    })
 }

@@ -59,7 +59,9 @@ use ga::Scalar;
 use ga::pga::{Line, Plane, Point};
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
-use crate::{direction, finish, is_degenerate, point, round_line, round_plane, unit_plane};
+use kernels_g3::watertight::finish;
+
+use crate::{direction, is_degenerate, point, round_line, round_plane, unit_plane};
 
 /// Plücker coordinates as PGA lines, each edge test one `line & line` (`NAME =
 /// "pga-plucker"`).

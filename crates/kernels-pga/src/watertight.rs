@@ -71,9 +71,10 @@ use core::marker::PhantomData;
 use ga::Scalar;
 use ga::pga::{Plane, Point};
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
+use kernels_g3::watertight::finish;
 use robust::{Coord, orient2d};
 
-use crate::{direction, finish, is_degenerate, point, round_plane, unit_plane};
+use crate::{direction, is_degenerate, point, round_plane, unit_plane};
 
 /// The watertight method in PGA (`NAME = "pga-watertight"`): vertices seen along the ray by
 /// two planes of its pencil, exactly antisymmetric and exactly signed edge functions.

@@ -10,12 +10,12 @@ use serde::de::DeserializeOwned;
 
 use super::rows::{AccuracyRow, StabilityRow};
 
+mod matrix;
 mod tables;
 
+use matrix::read_optional;
+pub use matrix::{InstructionLine, InterleavedLine, KernelLine, target};
 use tables::{accuracy_table, aimed_table, families, limits, sweeps};
-
-/// Ratios of GA to `la` time within this band count as "no significant difference".
-pub const SAME_COST_BAND: (f64, f64) = (0.8, 1.25);
 
 /// One row of `results/throughput.csv` (written by the throughput bench), the columns this
 /// summary reads.
@@ -89,7 +89,8 @@ pub fn read_throughput(path: &Path) -> Result<Option<Vec<ThroughputLine>>, Strin
     Ok(Some(out))
 }
 
-/// Reads the CSVs in `results` and writes `SUMMARY.md` there.
+/// Reads the CSVs in `results` and writes `SUMMARY.md` there, and `matrix.svg` (the
+/// like-for-like plot) when `interleaved.csv` is present.
 ///
 /// # Errors
 ///
@@ -98,7 +99,22 @@ pub fn write_summary(results: &Path) -> Result<(), String> {
     let accuracy: Vec<AccuracyRow> = read_rows(&results.join("accuracy.csv"))?;
     let stability: Vec<StabilityRow> = read_rows(&results.join("stability.csv"))?;
     let throughput = read_throughput(&results.join("throughput.csv"))?;
-    let text = render(&accuracy, &stability, throughput.as_deref());
+    let interleaved: Option<Vec<InterleavedLine>> =
+        read_optional(&results.join("interleaved.csv"))?;
+    let kernels: Option<Vec<KernelLine>> = read_optional(&results.join("kernels.csv"))?;
+    let instructions: Option<Vec<InstructionLine>> =
+        read_optional(&results.join("instructions.csv"))?;
+    let measured = Measured {
+        throughput: throughput.as_deref(),
+        interleaved: interleaved.as_deref(),
+        kernels: kernels.as_deref(),
+        instructions: instructions.as_deref(),
+    };
+    if let Some(lines) = &interleaved {
+        let svg = results.join("matrix.svg");
+        matrix::draw_matrix_svg(&svg, lines).map_err(|e| format!("{}: {e}", svg.display()))?;
+    }
+    let text = render(&accuracy, &stability, &measured);
     let path = results.join("SUMMARY.md");
     fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))
 }
@@ -132,24 +148,42 @@ fn median(mut v: Vec<f64>) -> Option<f64> {
     (!v.is_empty()).then(|| crate::median(&mut v))
 }
 
+/// The timing CSVs the summary reads beside the accuracy suite's, each absent when its bench
+/// has not been run.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Measured<'a> {
+    /// `throughput.csv`.
+    pub throughput: Option<&'a [ThroughputLine]>,
+    /// `interleaved.csv`: the like-for-like times.
+    pub interleaved: Option<&'a [InterleavedLine]>,
+    /// `kernels.csv`: ns per test and bytes per triangle.
+    pub kernels: Option<&'a [KernelLine]>,
+    /// `instructions.csv`: instructions per ray.
+    pub instructions: Option<&'a [InstructionLine]>,
+}
+
 /// The summary's Markdown.
 #[must_use]
-pub fn render(
-    accuracy: &[AccuracyRow],
-    stability: &[StabilityRow],
-    throughput: Option<&[ThroughputLine]>,
-) -> String {
+pub fn render(accuracy: &[AccuracyRow], stability: &[StabilityRow], measured: &Measured) -> String {
     let mut s = String::new();
     let cpu = accuracy.first().map_or("unknown", |r| r.cpu.as_str());
-    let _ = writeln!(s, "# Accuracy and stability: summary\n");
+    let _ = writeln!(s, "# Like for like, accuracy and stability: summary\n");
     let _ = writeln!(
         s,
         "Generated from `results/accuracy.csv`, `results/stability.csv` and, when present, \
+         `results/interleaved.csv`, `results/kernels.csv`, `results/instructions.csv` and \
          `results/throughput.csv` by `cargo bench -p wedge-benches --bench accuracy` (or \
          `cargo run -p wedge-benches --bin summary` to regenerate from the CSVs alone). Do not \
          edit. CPU: {cpu}.\n"
     );
-    conclusion(&mut s, accuracy, throughput);
+    matrix::verdict(
+        &mut s,
+        accuracy,
+        measured.interleaved,
+        measured.kernels,
+        measured.instructions,
+    );
+    conclusion(&mut s, accuracy, measured.throughput);
     limits(&mut s, accuracy, stability);
     accuracy_table(&mut s, accuracy);
     aimed_table(&mut s, accuracy);
@@ -177,16 +211,10 @@ pub fn render(
     s
 }
 
-/// Whether `name` is a back end of the registry written in a geometric algebra (`g3` now,
-/// `pga` and `cga` later): the back ends the report's conclusion is about.
 /// The back ends that declare themselves watertight, as `` `la`, `ga-plucker`, ... ``.
 fn watertight_names() -> String {
     let names = Backend::ALL.iter().filter(|b| b.guarantees().watertight).map(|b| b.name());
     names.map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
-}
-
-fn geometric(name: &str) -> bool {
-    Backend::from_name(name).is_some_and(|b| b.algebra().is_geometric())
 }
 
 /// Whether `name` is a back end of the registry other than the baseline (`la`), which the
@@ -195,18 +223,17 @@ fn compared_with_baseline(name: &str) -> bool {
     Backend::from_name(name).is_some_and(|b| b != Backend::BASELINE)
 }
 
+/// Images and cost per back end, every back end against `la` (the default), whatever its
+/// method: the tables the like-for-like verdict above is read beside.
 fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[ThroughputLine]>) {
-    let _ = writeln!(s, "## Does the report's conclusion hold on this machine?\n");
+    let _ = writeln!(s, "## Images and cost of every back end against `la`\n");
     let _ = writeln!(
         s,
-        "The report concludes that \"geometric algebra in 3-dimensions has no significant \
-         benefits or disadvantages over linear algebra\" for a ray tracer. Two checks: do the \
-         GA back ends draw the same images as the linear-algebra one, and at what cost?\n"
+        "Every back end against the default (`la`, LA watertight), across methods: what a \
+         user choosing a back end sees. The like-for-like comparison of algebras is above.\n"
     );
     let camera: Vec<&AccuracyRow> = rows.iter().filter(|r| r.ray_set == "camera").collect();
-    let mut images_equal = true;
     if camera.is_empty() {
-        images_equal = false;
         let _ = writeln!(s, "**Images**: no camera rows in `accuracy.csv` (the run had none).\n");
     } else {
         let pixels = camera[0].rays;
@@ -224,9 +251,6 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
         let _ = writeln!(s, "|---|---|---|---|---|");
         for r in &camera {
             let differ = r.differs_from_la_per_million.map(|pm| (pm * r.rays as f64 / 1e6).round());
-            if geometric(&r.backend) && differ.is_some_and(|d| d > 0.0) {
-                images_equal = false;
-            }
             let wrong = r.wrong_triangle.map(|w| w as f64);
             let _ = writeln!(
                 s,
@@ -249,7 +273,6 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
     );
     let _ = writeln!(s, "| back end | f32 ns/ray | ratio to la | f64 ns/ray | ratio to la |");
     let _ = writeln!(s, "|---|---|---|---|---|");
-    let mut ga_ratios = Vec::new();
     let mut backends: Vec<&str> = Vec::new();
     for r in rows {
         if !backends.contains(&r.backend.as_str()) {
@@ -262,17 +285,11 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
             let ns = find(rows, b, p, "random").and_then(|r| r.ns_per_ray);
             let la = find(rows, "la", p, "random").and_then(|r| r.ns_per_ray);
             let ratio = ns.zip(la).map(|(a, l)| a / l);
-            if geometric(b)
-                && let Some(x) = ratio
-            {
-                ga_ratios.push((b.to_string(), p, x));
-            }
             cells.push(format!("{} | {}", fmt(ns), fmt(ratio)));
         }
         let _ = writeln!(s, "| {b} | {} |", cells.join(" | "));
     }
     let _ = writeln!(s);
-    let mut tp_ratios: Vec<(String, f64)> = Vec::new();
     match throughput {
         None => {
             let _ = writeln!(
@@ -305,11 +322,6 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
                     let lo = ratios.iter().copied().fold(f64::INFINITY, f64::min);
                     let hi = ratios.iter().copied().fold(0.0, f64::max);
                     let m = median(ratios.clone());
-                    if geometric(b)
-                        && let Some(m) = m
-                    {
-                        tp_ratios.push((format!("{b} {p}"), m));
-                    }
                     let _ = writeln!(
                         s,
                         "| {b} | {p} | {} | {} | {} | {} |",
@@ -323,80 +335,12 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
             let _ = writeln!(s);
         }
     }
-    // The verdict, from the figures above. The cost is judged on `ga`, the report's method
-    // with its per-triangle part precomputed (the GA counterpart of a production kernel),
-    // against `la`: from the throughput bench when it ran (many scenes and ray sets), else
-    // from this bench.
-    let ratio_of = |p: &str| -> Option<(f64, &'static str)> {
-        let from_tp = tp_ratios.iter().find(|(name, _)| *name == format!("ga {p}")).map(|x| x.1);
-        let from_here = ga_ratios.iter().find(|(b, q, _)| b == "ga" && *q == p).map(|x| x.2);
-        from_tp
-            .map(|x| (x, "median over `throughput.csv`"))
-            .or(from_here.map(|x| (x, "this bench")))
-    };
-    let ratios: Vec<(&str, f64, &str)> = ["f32", "f64"]
-        .into_iter()
-        .filter_map(|p| ratio_of(p).map(|(x, src)| (p, x, src)))
-        .collect();
-    let in_band = |x: f64| (SAME_COST_BAND.0..=SAME_COST_BAND.1).contains(&x);
-    let same_cost = !ratios.is_empty() && ratios.iter().all(|(_, x, _)| in_band(*x));
-    let _ = write!(s, "**Verdict.** ");
-    if images_equal {
-        let _ = write!(
-            s,
-            "The GA back ends draw exactly the same images as `la` (the same nearest triangle in \
-             every pixel, in both precisions). "
-        );
-    } else if !camera.is_empty() {
-        let _ = write!(
-            s,
-            "The GA back ends do **not** draw exactly the same images as `la`: see the pixel \
-             counts above (pixels whose ray passes within rounding of an edge, where the last \
-             bits decide the nearest triangle). "
-        );
-    }
-    if ratios.is_empty() {
-        let _ = write!(s, "No timings (a run without criterion timings): the cost is unknown. ");
-    } else {
-        let parts: Vec<String> =
-            ratios.iter().map(|(p, x, src)| format!("{x:.2} in {p} ({src})")).collect();
-        let _ = write!(
-            s,
-            "`ga` takes {} times `la`'s time per ray; ratios from {:.2} to {:.2} count here as \
-             no significant difference{}. ",
-            parts.join(" and "),
-            SAME_COST_BAND.0,
-            SAME_COST_BAND.1,
-            if same_cost {
-                String::new()
-            } else if ratios.iter().all(|(_, x, _)| *x < SAME_COST_BAND.0) {
-                ": GA is faster here, a benefit the report did not find".to_owned()
-            } else if ratios.iter().all(|(_, x, _)| *x > SAME_COST_BAND.1) {
-                ": GA costs more here".to_owned()
-            } else {
-                ": outside that band in one precision".to_owned()
-            }
-        );
-    }
-    let holds = images_equal && same_cost;
-    let _ = writeln!(
-        s,
-        "So on this machine the report's conclusion **{}**.\n",
-        if holds {
-            "holds: equal images at no significant difference in cost"
-        } else if images_equal {
-            "holds for the images but not for the cost"
-        } else if same_cost {
-            "holds for the cost, and for the images up to the pixels counted above"
-        } else {
-            "does not hold as stated; see the figures above"
-        }
-    );
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use backends::{Algebra, Method};
 
     fn row(backend: &str, precision: &str, ray_set: &str) -> AccuracyRow {
         AccuracyRow {
@@ -428,32 +372,49 @@ mod tests {
         out
     }
 
+    /// Interleaved lines for every back end, in one column, with `rate(backend)` Mrays/s.
+    fn interleaved(rate: impl Fn(Backend) -> f64) -> Vec<InterleavedLine> {
+        let mut out = Vec::new();
+        for b in Backend::ALL {
+            for p in ["f32", "f64"] {
+                out.push(InterleavedLine {
+                    backend: b.name().into(),
+                    precision: p.into(),
+                    scene: "bunny".into(),
+                    ray_set: "primary_closest".into(),
+                    median_mrays_per_s: rate(b),
+                });
+            }
+        }
+        out
+    }
+
     #[test]
     fn the_verdict_follows_the_figures() {
-        let same = render(&rows(0.0, 110.0), &[], None);
-        assert!(same.contains("conclusion **holds: equal images"), "{same}");
-        assert!(same.contains("`results/throughput.csv` is **absent**"));
-        let slow = render(&rows(0.0, 200.0), &[], None);
-        assert!(slow.contains("holds for the images but not for the cost"), "{slow}");
-        assert!(slow.contains("GA costs more here"));
-        let differ = render(&rows(100.0, 100.0), &[], None);
-        assert!(differ.contains("do **not** draw exactly the same images"), "{differ}");
-        // Throughput figures, when present, decide the cost.
-        let tp: Vec<ThroughputLine> = ["f32", "f64"]
-            .into_iter()
-            .map(|p| ThroughputLine {
-                backend: "ga".into(),
-                precision: p.into(),
-                scene: "bunny".into(),
-                ray_set: "primary".into(),
-                threads: "1".into(),
-                mrays_per_s: 1.0,
-                ratio_to_la: Some(3.0),
-            })
-            .collect();
-        let with_tp = render(&rows(0.0, 110.0), &[], Some(&tp));
-        assert!(with_tp.contains("3.00 in f32 (median over `throughput.csv`)"), "{with_tp}");
-        assert!(with_tp.contains("not for the cost"));
+        let absent = render(&rows(0.0, 110.0), &[], &Measured::default());
+        assert!(absent.contains("`results/interleaved.csv` is **absent**"), "{absent}");
+        assert!(absent.contains("`results/throughput.csv` is **absent**"));
+        // Every cell as fast as its LA cell: every row met, the report's conclusion holds.
+        let level = interleaved(|_| 10.0);
+        let m = Measured { interleaved: Some(&level), ..Measured::default() };
+        let text = render(&rows(0.0, 110.0), &[], &m);
+        assert!(!text.contains("**missed**"), "{text}");
+        assert!(text.contains("the report's conclusion holds when methods are matched"), "{text}");
+        assert!(text.contains("Neither reduces computation"), "{text}");
+        // CGA cells at half the rate: 2x their LA cells' time, over the 1.10 target.
+        let slow = interleaved(|b| if b.algebra() == Algebra::Cga { 5.0 } else { 10.0 });
+        let m = Measured { interleaved: Some(&slow), ..Measured::default() };
+        let text = render(&rows(0.0, 110.0), &[], &m);
+        let cga_mt = Backend::cell(Method::MollerTrumbore, Algebra::Cga).unwrap().name();
+        let row = format!("| mt | `{cga_mt}` | cga | f32 | 2 | 2 | 1.10 | **missed** |");
+        assert!(text.contains(&row), "{text}");
+        assert!(text.contains("**Why cells miss.**"), "{text}");
+        assert!(text.contains("| cga | 2 (2-2) | 0 of 10 |"), "{text}");
+        // G3 faster than LA for the same method: a benefit the report did not find.
+        let fast = interleaved(|b| if b.algebra() == Algebra::G3 { 20.0 } else { 10.0 });
+        let m = Measured { interleaved: Some(&fast), ..Measured::default() };
+        let text = render(&rows(0.0, 110.0), &[], &m);
+        assert!(text.contains("3D GA is faster than LA for the same method"), "{text}");
     }
 
     #[test]
@@ -477,7 +438,8 @@ mod tests {
                 ratio_to_la: Some(1.0),
             });
         }
-        let text = render(&rows, &[], Some(&tp));
+        let m = Measured { throughput: Some(&tp), ..Measured::default() };
+        let text = render(&rows, &[], &m);
         for b in names {
             let cost_row = format!("| {b} | 100 | 1 |");
             assert!(text.contains(&cost_row), "{b} missing from the cost table:\n{text}");
@@ -486,10 +448,7 @@ mod tests {
             assert_eq!(listed, Backend::from_name(b) != Some(Backend::BASELINE), "{b}:\n{text}");
         }
         assert!(!text.contains("| exact | f32 | 1 |"), "the reference is not compared");
-        for b in Backend::ALL {
-            assert_eq!(geometric(b.name()), b.algebra().is_geometric());
-        }
-        assert!(!geometric("exact") && !compared_with_baseline("exact"));
+        assert!(!compared_with_baseline("exact"));
     }
 
     #[test]
