@@ -92,9 +92,8 @@ fn csv_pairs(name: &str) -> Vec<(String, String)> {
 
 #[test]
 fn every_results_table_has_every_backend_in_both_precisions() {
-    for file in
-        ["throughput.csv", "kernels.csv", "accuracy.csv", "interleaved.csv", "stability.csv"]
-    {
+    let files = ["throughput.csv", "kernels.csv", "accuracy.csv", "interleaved.csv"];
+    for file in files.into_iter().chain(["stability.csv", "instructions.csv"]) {
         let pairs = csv_pairs(file);
         for b in Backend::ALL {
             for p in Precision::ALL {

@@ -9,7 +9,7 @@ use std::path::Path;
 
 use backends::{Algebra, Backend, Method};
 
-use super::{AccuracyRow, fmt, median};
+use super::{AccuracyRow, Measured, fmt, median};
 
 /// Time over the row's LA cell that each algebra's cells are held to, in every column.
 #[must_use]
@@ -68,6 +68,34 @@ pub struct InstructionLine {
     pub ray_set: String,
     /// Instructions per ray counted by callgrind (traversal and tests).
     pub instructions_per_ray: f64,
+}
+
+/// The lines of code of every back end's kernel: the file under `crates/kernels-*/src/` that
+/// declares its `NAME` (one kernel per file), counting neither blank lines, comments nor the
+/// tests after `#[cfg(test)]`. Decision code shared along a row counts once, in the file
+/// that holds it (`kernels-g3`'s `frame.rs` and `watertight.rs`).
+#[must_use]
+pub fn kernel_lines(workspace: &Path) -> Vec<(String, usize)> {
+    let mut files = Vec::new();
+    let crates = std::fs::read_dir(workspace.join("crates")).into_iter().flatten().flatten();
+    for krate in crates.filter(|c| c.file_name().to_string_lossy().starts_with("kernels-")) {
+        let sources = std::fs::read_dir(krate.path().join("src")).into_iter().flatten().flatten();
+        files.extend(sources.filter_map(|f| std::fs::read_to_string(f.path()).ok()));
+    }
+    let mut out = Vec::new();
+    for b in Backend::ALL {
+        let declared = format!("const NAME: &'static str = \"{}\";", b.name());
+        if let Some(text) = files.iter().find(|t| t.contains(&declared)) {
+            let code = text
+                .lines()
+                .map(str::trim)
+                .take_while(|l| *l != "#[cfg(test)]")
+                .filter(|l| !l.is_empty() && !l.starts_with("//"))
+                .count();
+            out.push((b.name().to_owned(), code));
+        }
+    }
+    out
 }
 
 /// Reads a CSV if it exists; `Ok(None)` when it is absent.
@@ -156,13 +184,8 @@ fn members(method: Method, algebra: Algebra) -> Vec<Backend> {
 }
 
 /// Writes the verdict's sections.
-pub(super) fn verdict(
-    out: &mut String,
-    accuracy_rows: &[AccuracyRow],
-    interleaved: Option<&[InterleavedLine]>,
-    kernels: Option<&[KernelLine]>,
-    instructions: Option<&[InstructionLine]>,
-) {
+pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured: &Measured) {
+    let Measured { interleaved, kernels, instructions, kernel_lines, .. } = *measured;
     // The tables go into `tables`, written after the verdict drawn from them.
     let mut tables = String::new();
     let s = &mut tables;
@@ -394,6 +417,27 @@ pub(super) fn verdict(
         );
     }
     let _ = writeln!(s);
+
+    if !kernel_lines.is_empty() {
+        let _ = writeln!(
+            s,
+            "**Writing it.** Lines of code of each cell's kernel (its file, without comments, \
+             blank lines and tests; decision code shared along a row counts once, in \
+             `kernels-g3`), the report having found GA harder to write:\n"
+        );
+        let algebras = [Algebra::La, Algebra::G3, Algebra::Pga, Algebra::Cga];
+        let _ = writeln!(s, "| method | {} |", algebras.map(Algebra::name).join(" | "));
+        let _ = writeln!(s, "|---|{}", "---|".repeat(algebras.len()));
+        for m in Method::ALL {
+            let cells = algebras.map(|a| {
+                Backend::cell(m, a)
+                    .and_then(|b| kernel_lines.iter().find(|(n, _)| n == b.name()))
+                    .map_or("-".to_owned(), |(_, n)| n.to_string())
+            });
+            let _ = writeln!(s, "| {} | {} |", m.name(), cells.join(" | "));
+        }
+        let _ = writeln!(s);
+    }
 
     // The verdict, before the tables drawn from it.
     let s = out;

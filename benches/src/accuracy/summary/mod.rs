@@ -14,7 +14,7 @@ mod matrix;
 mod tables;
 
 use matrix::read_optional;
-pub use matrix::{InstructionLine, InterleavedLine, KernelLine, target};
+pub use matrix::{InstructionLine, InterleavedLine, KernelLine, kernel_lines, target};
 use tables::{accuracy_table, aimed_table, families, limits, sweeps};
 
 /// One row of `results/throughput.csv` (written by the throughput bench), the columns this
@@ -109,6 +109,7 @@ pub fn write_summary(results: &Path) -> Result<(), String> {
         interleaved: interleaved.as_deref(),
         kernels: kernels.as_deref(),
         instructions: instructions.as_deref(),
+        kernel_lines: &kernel_lines(&crate::workspace_root()),
     };
     if let Some(lines) = &interleaved {
         let svg = results.join("matrix.svg");
@@ -160,6 +161,8 @@ pub struct Measured<'a> {
     pub kernels: Option<&'a [KernelLine]>,
     /// `instructions.csv`: instructions per ray.
     pub instructions: Option<&'a [InstructionLine]>,
+    /// Lines of code per back end's kernel ([`kernel_lines`]).
+    pub kernel_lines: &'a [(String, usize)],
 }
 
 /// The summary's Markdown.
@@ -176,13 +179,7 @@ pub fn render(accuracy: &[AccuracyRow], stability: &[StabilityRow], measured: &M
          `cargo run -p wedge-benches --bin summary` to regenerate from the CSVs alone). Do not \
          edit. CPU: {cpu}.\n"
     );
-    matrix::verdict(
-        &mut s,
-        accuracy,
-        measured.interleaved,
-        measured.kernels,
-        measured.instructions,
-    );
+    matrix::verdict(&mut s, accuracy, measured);
     conclusion(&mut s, accuracy, measured.throughput);
     limits(&mut s, accuracy, stability);
     accuracy_table(&mut s, accuracy);
