@@ -47,6 +47,18 @@ pub fn label<I: Intersector>() -> String {
     format!("{} {}", I::NAME, core::any::type_name::<I::Real>())
 }
 
+/// Asserts that `I` declares exactly `declared` (what its tests expect of it, written
+/// independently of the kernel, so that a kernel cannot leave the watertight checks by
+/// declaring less), then runs [`check_all`].
+///
+/// # Panics
+///
+/// If the declaration differs, or at the first check the kernel fails.
+pub fn check_declared<I: Intersector + Default>(declared: Guarantees) {
+    assert_eq!(I::GUARANTEES, declared, "{}: declared guarantees", I::NAME);
+    check_all::<I>();
+}
+
 /// Every check of this module that applies to a kernel with the guarantees it declares
 /// ([`Intersector::GUARANTEES`]): a kernel that claims watertightness is held to it.
 ///
