@@ -26,6 +26,7 @@ use std::process::{Command, ExitCode};
 use backends::{Algebra, Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use intersect::{Intersector, Ray};
+use scene::Mesh;
 use serde::Serialize;
 use wedge_benches::throughput::rays::{INCOHERENT_SEED, RaySet, incoherent_rays, primary_rays};
 use wedge_benches::throughput::scenes::bunny;
@@ -57,6 +58,7 @@ fn measured_trace<I: Intersector>(accel: &Accel<I>, rays: &[Ray<I::Real>], set: 
 
 /// A child's work: build, make the rays, trace them once.
 struct Count {
+    mesh: Mesh,
     rays: Vec<Ray<f64>>,
     set: RaySet,
 }
@@ -65,19 +67,30 @@ impl Job for Count {
     type Output = Traced;
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Traced {
-        let accel = Accel::build(intersector, &bunny().triangles());
+        let accel = Accel::build(intersector, &self.mesh.triangles());
         let rays: Vec<Ray<I::Real>> = self.rays.iter().map(Ray::cast).collect();
         black_box(measured_trace(&accel, &rays, self.set))
     }
 }
 
-/// The rays of `set`, in `f64`.
-fn rays(set: RaySet, quick: bool) -> Vec<Ray<f64>> {
-    let (side, incoherent) = if quick { (16, 256) } else { (128, 16_384) };
+/// Primary rays per image side and incoherent rays.
+const fn sizes(quick: bool) -> (u32, usize) {
+    if quick { (16, 256) } else { (128, 16_384) }
+}
+
+/// How many rays `set` has.
+fn ray_count(set: RaySet, quick: bool) -> usize {
+    let (side, incoherent) = sizes(quick);
+    if set.is_primary() { (side * side) as usize } else { incoherent }
+}
+
+/// The rays of `set` on `mesh`, in `f64`.
+fn rays(mesh: &Mesh, set: RaySet, quick: bool) -> Vec<Ray<f64>> {
+    let (side, incoherent) = sizes(quick);
     if set.is_primary() {
-        primary_rays(&bunny(), side, side)
+        primary_rays(mesh, side, side)
     } else {
-        incoherent_rays(&bunny(), incoherent, INCOHERENT_SEED)
+        incoherent_rays(mesh, incoherent, INCOHERENT_SEED)
     }
 }
 
@@ -90,7 +103,9 @@ fn child(spec: &str) -> Result<(), String> {
     let precision = Precision::from_name(precision).ok_or(format!("no precision {precision}"))?;
     let set = next()?;
     let set = RaySet::ALL.into_iter().find(|s| s.name() == set).ok_or(format!("no set {set}"))?;
-    let traced = dispatch(backend, precision, Count { rays: rays(set, quick_mode()), set });
+    let mesh = bunny();
+    let rays = rays(&mesh, set, quick_mode());
+    let traced = dispatch(backend, precision, Count { mesh, rays, set });
     println!("{}", traced.hits);
     Ok(())
 }
@@ -134,7 +149,7 @@ fn parent() -> Result<(), String> {
     let cpu = machine();
     for precision in Precision::ALL {
         for set in RaySet::ALL {
-            let n = rays(set, quick).len();
+            let n = ray_count(set, quick);
             let mut counts = Vec::new();
             for &b in &backends {
                 let spec = format!("{}:{}:{}", b.name(), precision.name(), set.name());

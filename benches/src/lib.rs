@@ -317,6 +317,18 @@ impl SplitMix64 {
     }
 }
 
+/// The distinct values in first-seen order (the row order of a CSV, kept for its tables).
+#[must_use]
+pub fn distinct<T: PartialEq>(values: impl IntoIterator<Item = T>) -> Vec<T> {
+    let mut out = Vec::new();
+    for v in values {
+        if !out.contains(&v) {
+            out.push(v);
+        }
+    }
+    out
+}
+
 /// The `main` of a bench that measures in child processes of its own binary: with the
 /// environment variable `child_env` set, runs `child` on its value, else `parent`; an error
 /// is printed as one `error:` line and fails the process.

@@ -6,6 +6,7 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use super::rows::AccuracyRow;
+use crate::distinct;
 
 /// One point of the plot.
 #[derive(Clone, Debug, PartialEq)]
@@ -90,15 +91,7 @@ pub fn draw_runtime_vs_error(
             points(rows, aimed_failures),
         ),
     ];
-    let backends: Vec<String> = {
-        let mut b: Vec<String> = Vec::new();
-        for r in rows {
-            if !b.contains(&r.backend) {
-                b.push(r.backend.clone());
-            }
-        }
-        b
-    };
+    let backends: Vec<String> = distinct(rows.iter().map(|r| r.backend.clone()));
     let root = SVGBackend::new(path, (1200, 560)).into_drawing_area();
     root.fill(&WHITE)?;
     let (header, body) = root.split_vertically(40);

@@ -6,6 +6,7 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use super::rows::ThroughputRow;
+use crate::distinct;
 
 /// Panel size in pixels.
 const PANEL: (u32, u32) = (560, 330);
@@ -108,15 +109,4 @@ pub fn draw_throughput_svg(
     }
     root.present()?;
     Ok(())
-}
-
-/// The distinct values in first-seen order.
-fn distinct<'a>(values: impl Iterator<Item = &'a str>) -> Vec<&'a str> {
-    let mut out: Vec<&str> = Vec::new();
-    for v in values {
-        if !out.contains(&v) {
-            out.push(v);
-        }
-    }
-    out
 }

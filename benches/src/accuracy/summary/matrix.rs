@@ -10,6 +10,7 @@ use std::path::Path;
 use backends::{Algebra, Backend, Method};
 
 use super::{AccuracyRow, Measured, fmt, median};
+use crate::distinct;
 
 /// Time over the row's LA cell that each algebra's cells are held to, in every column.
 #[must_use]
@@ -111,14 +112,7 @@ pub fn read_optional<R: serde::de::DeserializeOwned>(
 
 /// The time columns of the verdict: every (scene, ray set) of `interleaved.csv`, in order.
 fn columns(lines: &[InterleavedLine]) -> Vec<(String, String)> {
-    let mut out: Vec<(String, String)> = Vec::new();
-    for l in lines {
-        let c = (l.scene.clone(), l.ray_set.clone());
-        if !out.contains(&c) {
-            out.push(c);
-        }
-    }
-    out
+    distinct(lines.iter().map(|l| (l.scene.clone(), l.ray_set.clone())))
 }
 
 /// `backend`'s time over `base`'s in one precision and column (median Mrays/s inverted).
@@ -443,13 +437,14 @@ pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured:
     let s = out;
     let _ = writeln!(s, "## Verdict\n");
     let la_best = best_of.iter().find(|(a, ..)| *a == Algebra::La).map(|x| x.2);
-    let mut table = String::new();
     let _ = writeln!(
-        table,
+        s,
         "| algebra | cells' time over LA, same method: geometric mean (range) | rows within target | best cell over best LA cell | Fontijne and Dorst (2003) |"
     );
-    let _ = writeln!(table, "|---|---|---|---|---|");
-    let mut summary_words = Vec::new();
+    let _ = writeln!(s, "|---|---|---|---|---|");
+    // Per algebra with figures: (algebra, geometric mean, best cell over best LA cell, rows
+    // within target, rows).
+    let mut standing: Vec<(Algebra, f64, Option<f64>, usize, usize)> = Vec::new();
     for (algebra, all, met, rows) in &per_algebra {
         let g = geomean(all);
         let lo = all.iter().copied().reduce(f64::min);
@@ -458,7 +453,7 @@ pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured:
         let best_ratio = best.zip(la_best).map(|(b, l)| b.2 / l);
         let fd = FONTIJNE_DORST.iter().find(|(a, _)| a == algebra).map_or("-", |x| x.1);
         let _ = writeln!(
-            table,
+            s,
             "| {} | {} ({}-{}) | {met} of {rows} | {} ({}) | {fd} |",
             algebra.name(),
             fmt(g),
@@ -468,11 +463,11 @@ pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured:
             best.map_or("-", |b| b.1.name())
         );
         if let Some(g) = g {
-            summary_words.push((*algebra, g, best_ratio));
+            standing.push((*algebra, g, best_ratio, *met, *rows));
         }
     }
-    let _ = writeln!(s, "{table}");
-    let g3 = summary_words.iter().find(|x| x.0 == Algebra::G3);
+    let _ = writeln!(s);
+    let g3 = standing.iter().find(|x| x.0 == Algebra::G3);
     let images = if differing_pixels == 0.0 {
         "the same images (0 differing pixels in every cell, both precisions)".to_owned()
     } else {
@@ -485,9 +480,7 @@ pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured:
         s,
         "**3D GA (the report's question).** Written in G3 types, every method gives {images}"
     );
-    let (met, rows) =
-        per_algebra.iter().find(|x| x.0 == Algebra::G3).map_or((0, 0), |x| (x.2, x.3));
-    if let Some((_, g, best)) = g3 {
+    if let Some((_, g, best, met, rows)) = g3 {
         let _ = write!(
             s,
             " at {}x LA's time for the same method (geometric mean over methods, precisions and \
@@ -518,27 +511,25 @@ pub(super) fn verdict(out: &mut String, accuracy_rows: &[AccuracyRow], measured:
     } else {
         let _ = writeln!(s, ".\n");
     }
-    let higher: Vec<String> = summary_words
+    let higher: Vec<String> = standing
         .iter()
         .filter(|x| x.0 != Algebra::G3)
-        .map(|(a, g, best)| {
+        .map(|(a, g, best, met, rows)| {
             format!(
                 "{} takes {}x LA's time for the same method (its best cell {}x the best LA \
-                 cell; {} of {} rows within {:.2}x)",
+                 cell; {met} of {rows} rows within {:.2}x)",
                 a.name(),
                 fmt(Some(*g)),
                 fmt(*best),
-                per_algebra.iter().find(|x| x.0 == *a).map_or(0, |x| x.2),
-                per_algebra.iter().find(|x| x.0 == *a).map_or(0, |x| x.3),
                 target(*a)
             )
         })
         .collect();
     if !higher.is_empty() {
-        let reduce = summary_words
+        let reduce = standing
             .iter()
             .filter(|x| x.0 != Algebra::G3)
-            .any(|(_, g, best)| *g < 1.0 || best.is_some_and(|b| b < 1.0));
+            .any(|(_, g, best, ..)| *g < 1.0 || best.is_some_and(|b| b < 1.0));
         let _ = writeln!(
             s,
             "**4D and 5D GA (the report's future work).** {}. {} Fontijne and Dorst found 2.97x \
@@ -576,22 +567,15 @@ pub fn draw_matrix_svg(
 ) -> Result<(), Box<dyn std::error::Error>> {
     use plotters::prelude::*;
     let cols = columns(lines);
-    let bars: Vec<(Algebra, Option<&'static str>)> = [Algebra::G3, Algebra::Pga, Algebra::Cga]
-        .into_iter()
-        .flat_map(|a| {
+    let bars: Vec<(Algebra, Option<&'static str>)> =
+        distinct([Algebra::G3, Algebra::Pga, Algebra::Cga].into_iter().flat_map(|a| {
             let variants = Backend::ALL
                 .into_iter()
                 .filter(move |b| b.algebra() == a)
                 .filter_map(Backend::variant)
                 .map(Some);
             std::iter::once(None).chain(variants).map(move |v| (a, v))
-        })
-        .fold(Vec::new(), |mut out, x| {
-            if !out.contains(&x) {
-                out.push(x);
-            }
-            out
-        });
+        }));
     // The back end of a bar in a method's group.
     let backend = |m: Method, (a, v): (Algebra, Option<&'static str>)| {
         Backend::ALL.into_iter().find(|b| b.method() == m && b.algebra() == a && b.variant() == v)

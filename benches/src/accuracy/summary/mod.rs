@@ -9,6 +9,7 @@ use backends::Backend;
 use serde::de::DeserializeOwned;
 
 use super::rows::{AccuracyRow, StabilityRow};
+use crate::distinct;
 
 mod matrix;
 mod tables;
@@ -270,12 +271,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
     );
     let _ = writeln!(s, "| back end | f32 ns/ray | ratio to la | f64 ns/ray | ratio to la |");
     let _ = writeln!(s, "|---|---|---|---|---|");
-    let mut backends: Vec<&str> = Vec::new();
-    for r in rows {
-        if !backends.contains(&r.backend.as_str()) {
-            backends.push(&r.backend);
-        }
-    }
+    let backends = distinct(rows.iter().map(|r| r.backend.as_str()));
     for b in &backends {
         let mut cells = Vec::new();
         for p in ["f32", "f64"] {

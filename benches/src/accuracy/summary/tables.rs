@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use super::{count, fmt};
 use crate::accuracy::rows::{AccuracyRow, StabilityRow};
+use crate::distinct;
 
 /// One hard limit missed by one back end, summed over the rows it applies to.
 struct Miss {
@@ -14,14 +15,7 @@ struct Miss {
 }
 
 fn subjects_of(accuracy: &[AccuracyRow]) -> Vec<(String, String)> {
-    let mut out: Vec<(String, String)> = Vec::new();
-    for r in accuracy {
-        let key = (r.backend.clone(), r.precision.clone());
-        if !out.contains(&key) {
-            out.push(key);
-        }
-    }
-    out
+    distinct(accuracy.iter().map(|r| (r.backend.clone(), r.precision.clone())))
 }
 
 fn misses(accuracy: &[AccuracyRow], stability: &[StabilityRow]) -> Vec<Miss> {
@@ -216,20 +210,12 @@ pub(super) fn sweeps(s: &mut String, rows: &[StabilityRow]) {
          and in brackets the reference's change in the same precision (the part due to the \
          moved mesh's rounding to `f32`).\n"
     );
-    let mut variants: Vec<(&str, &str, &str)> = Vec::new();
-    for r in rows.iter().filter(|r| r.family == "translate" || r.family == "scale") {
-        let key = (r.family.as_str(), r.scene.as_str(), r.variant.as_str());
-        if !variants.contains(&key) {
-            variants.push(key);
-        }
-    }
-    let mut subjects: Vec<(&str, &str)> = Vec::new();
-    for r in rows {
-        let key = (r.backend.as_str(), r.precision.as_str());
-        if !subjects.contains(&key) {
-            subjects.push(key);
-        }
-    }
+    let variants = distinct(
+        rows.iter()
+            .filter(|r| r.family == "translate" || r.family == "scale")
+            .map(|r| (r.family.as_str(), r.scene.as_str(), r.variant.as_str())),
+    );
+    let subjects = distinct(rows.iter().map(|r| (r.backend.as_str(), r.precision.as_str())));
     let header: Vec<String> = subjects.iter().map(|(b, p)| format!("{b} {p}")).collect();
     let _ = writeln!(s, "| sweep | scene | step | {} |", header.join(" | "));
     let _ = writeln!(s, "|---|---|---|{}", "---|".repeat(subjects.len()));
@@ -275,13 +261,11 @@ pub(super) fn families(s: &mut String, rows: &[StabilityRow]) {
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
     for family in ["grazing", "axis-aligned", "on-surface", "degenerate"] {
-        let mut subjects: Vec<(&str, &str)> = Vec::new();
-        for r in rows.iter().filter(|r| r.family == family) {
-            let key = (r.backend.as_str(), r.precision.as_str());
-            if !subjects.contains(&key) {
-                subjects.push(key);
-            }
-        }
+        let subjects = distinct(
+            rows.iter()
+                .filter(|r| r.family == family)
+                .map(|r| (r.backend.as_str(), r.precision.as_str())),
+        );
         for (b, p) in subjects {
             let of: Vec<&StabilityRow> = rows
                 .iter()
