@@ -277,7 +277,10 @@ fn parent() -> Result<(), String> {
         .collect();
     let mut rows = Vec::new();
     for (i, (b, p)) in spec_names.iter().enumerate() {
-        let la = spec_names.iter().position(|(lb, lp)| lb == "la" && lp == p).unwrap_or(i);
+        let la = spec_names
+            .iter()
+            .position(|(lb, lp)| lb == Backend::BASELINE.name() && lp == p)
+            .unwrap_or(i);
         for s in 0..series {
             let (scene, set) = (SCENES[s / SETS.len()], SETS[s % SETS.len()]);
             let sorted = &figures[i][s];

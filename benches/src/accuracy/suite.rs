@@ -1,6 +1,6 @@
 //! The suite: which rays, how many, and the rows they give for every back end.
 
-use backends::{Job, Precision};
+use backends::{Backend, Job, Precision};
 use bvh::accel::Accel;
 use intersect::{Intersector, Ray, Triangle};
 
@@ -254,7 +254,10 @@ pub fn accuracy_rows(
         let rays = camera_rays(bunny, sizes.camera_side, sizes.camera_side);
         let results = run_scene(&triangles, &rays, &subjects, rays.len());
         let la = |p: Precision| {
-            results.iter().find(|(s, _)| s.name() == "la" && s.precision() == p).map(|(_, c)| c)
+            results
+                .iter()
+                .find(|(s, _)| s.name() == Backend::BASELINE.name() && s.precision() == p)
+                .map(|(_, c)| c)
         };
         for (s, c) in &results {
             let mut row = AccuracyRow::from_scene(*s, &bunny.name, "camera", c, cpu);

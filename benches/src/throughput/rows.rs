@@ -1,5 +1,6 @@
 //! The CSV rows of `results/throughput.csv`, `results/kernels.csv` and `results/build.csv`.
 
+use backends::Backend;
 use serde::Serialize;
 
 /// One row of `results/throughput.csv`: one back end, precision, scene, ray set and thread
@@ -46,7 +47,8 @@ pub struct ThroughputRow {
 /// Fills [`ThroughputRow::ratio_to_la`] from the `la` row of the same precision, scene, ray set
 /// and threads (left empty where there is none).
 pub fn fill_ratios_to_la(rows: &mut [ThroughputRow]) {
-    let la: Vec<ThroughputRow> = rows.iter().filter(|r| r.backend == "la").cloned().collect();
+    let la: Vec<ThroughputRow> =
+        rows.iter().filter(|r| r.backend == Backend::BASELINE.name()).cloned().collect();
     for row in rows.iter_mut() {
         row.ratio_to_la = la
             .iter()
@@ -81,7 +83,8 @@ pub struct KernelRow {
 
 /// Fills [`KernelRow::ratio_to_la`] from the `la` row of the same precision and case.
 pub fn fill_kernel_ratios_to_la(rows: &mut [KernelRow]) {
-    let la: Vec<KernelRow> = rows.iter().filter(|r| r.backend == "la").cloned().collect();
+    let la: Vec<KernelRow> =
+        rows.iter().filter(|r| r.backend == Backend::BASELINE.name()).cloned().collect();
     for row in rows.iter_mut() {
         row.ratio_to_la = la
             .iter()

@@ -276,7 +276,7 @@ fn conclusion(s: &mut String, rows: &[AccuracyRow], throughput: Option<&[Through
         let mut cells = Vec::new();
         for p in ["f32", "f64"] {
             let ns = find(rows, b, p, "random").and_then(|r| r.ns_per_ray);
-            let la = find(rows, "la", p, "random").and_then(|r| r.ns_per_ray);
+            let la = find(rows, Backend::BASELINE.name(), p, "random").and_then(|r| r.ns_per_ray);
             let ratio = ns.zip(la).map(|(a, l)| a / l);
             cells.push(format!("{} | {}", fmt(ns), fmt(ratio)));
         }
