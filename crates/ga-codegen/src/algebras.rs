@@ -110,7 +110,12 @@ fn pga() -> AlgebraSpec {
         regressive: Regressive::Complement,
         dual: Dual::Complement,
         emit_types: true,
-        hand_written: &[],
+        // Built from G3's kernels by hand (`pga/geometric.rs`); the generated scalar forms
+        // become `pub(crate)` functions they are checked against.
+        hand_written: &[
+            ("geometric", "Motor", "Motor"),
+            ("geometric", "Multivector", "Multivector"),
+        ],
         versors: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
         sandwiched: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
     }
@@ -175,7 +180,9 @@ fn cga() -> AlgebraSpec {
         regressive: Regressive::Complement,
         dual: Dual::InversePseudoscalar,
         emit_types: true,
-        hand_written: &[],
+        // Built from G3's kernels by hand (`cga/geometric.rs`), checked against the generated
+        // form.
+        hand_written: &[("geometric", "Multivector", "Multivector")],
         versors: &["Vector", "Rotor", "Motor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Quadvector"],
     }

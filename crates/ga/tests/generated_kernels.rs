@@ -1655,12 +1655,6 @@ mod pga {
             |a, b| a * b,
             |a, b| a.geometric(b),
         );
-        binary::<Motor<f64>, Motor<f64>, _>(
-            &basis,
-            "pga Motor geometric Motor",
-            |a, b| a * b,
-            |a, b| a.geometric(b),
-        );
         binary::<Motor<f64>, Rotor<f64>, _>(
             &basis,
             "pga Motor geometric Rotor",
@@ -1862,6 +1856,12 @@ mod pga {
         binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
             &basis,
             "pga Multivector geometric Pseudoscalar",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor geometric Motor",
             |a, b| a * b,
             |a, b| a.geometric(b),
         );

@@ -67,7 +67,9 @@
 //! `undual(A) = A I`; `undual(dual(A)) = A`. The dual of a quadvector (a sphere) is a vector
 //! (the dual sphere).
 //!
-//! These are the types and products, written by `ga-codegen` from its table; geometry (round
+//! These are the types and products, written by `ga-codegen` from its table (except
+//! `Multivector * Multivector`: sixteen G3 products on G3's SIMD kernel, in `geometric.rs`,
+//! checked against the generated expansion); geometry (round
 //! and flat objects, meets, reflections, rotors, translators, dilators, `exp` and `log`) is
 //! built on them by hand in [`geometry`], as methods of these types.
 //!
@@ -85,6 +87,7 @@
 #![doc = include_str!("generated/products.md")]
 
 mod generated;
+mod geometric;
 pub mod geometry;
 
 pub use generated::{

@@ -76,11 +76,14 @@
 //! `norm_squared` is `⟨A Ã⟩₀`, so the blades containing `e0` do not count (the Euclidean norm of
 //! a plane's normal, of a point's weight `w`).
 //!
-//! These are the types and products, written by `ga-codegen` from its table. Built on them by
-//! hand: [`geometry`] (points from coordinates and back, planes from normals or three points,
-//! joins and meets, distances, angles, projections) and [`motor`] (rotors, translators and
-//! motors from axes, angles and translations, `exp` of a line and `log` of a motor in closed
-//! form, normalisation, the motor applied to each type, its matrix).
+//! These are the types and products, written by `ga-codegen` from its table, except
+//! `Multivector * Multivector` and `Motor * Motor`, built on G3's SIMD kernels in `geometric.rs`
+//! (three G3 products; three quaternion products) and checked against the generated
+//! expansions. Built on them by hand: [`geometry`] (points from coordinates and back, planes
+//! from normals or three points, joins and meets, distances, angles, projections) and
+//! [`motor`] (rotors, translators and motors from axes, angles and translations, `exp` of a
+//! line and `log` of a motor in closed form, normalisation, the motor applied to each type,
+//! its matrix).
 //!
 //! # Cayley table of the geometric product
 //!
@@ -96,6 +99,7 @@
 #![doc = include_str!("generated/products.md")]
 
 mod generated;
+mod geometric;
 pub mod geometry;
 #[cfg(feature = "glam")]
 mod glam_interop;

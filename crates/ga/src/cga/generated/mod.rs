@@ -13,3 +13,6 @@ mod sandwich;
 mod types;
 
 pub use types::{Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector};
+
+#[cfg_attr(not(test), allow(unused_imports))]
+pub(crate) use geometric::geometric_multivector_multivector;

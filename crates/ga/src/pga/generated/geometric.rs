@@ -650,40 +650,38 @@ impl<T: Scalar> Mul<Point<T>> for Motor<T> {
     }
 }
 
-/// Geometric product `Motor * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Motor<T> {
-    type Output = Motor<T>;
-    #[inline]
-    fn mul(self, b: Motor<T>) -> Motor<T> {
-        let a = self;
-        Motor {
-            s: a.s * b.s - a.e12 * b.e12 - a.e31 * b.e31 - a.e23 * b.e23,
-            e01: a.s * b.e01 + a.e01 * b.s - a.e02 * b.e12 + a.e03 * b.e31 + a.e12 * b.e02
-                - a.e31 * b.e03
-                - a.e23 * b.e0123
-                - a.e0123 * b.e23,
-            e02: a.s * b.e02 + a.e01 * b.e12 + a.e02 * b.s
-                - a.e03 * b.e23
-                - a.e12 * b.e01
-                - a.e31 * b.e0123
-                + a.e23 * b.e03
-                - a.e0123 * b.e31,
-            e03: a.s * b.e03 - a.e01 * b.e31 + a.e02 * b.e23 + a.e03 * b.s - a.e12 * b.e0123
-                + a.e31 * b.e01
-                - a.e23 * b.e02
-                - a.e0123 * b.e12,
-            e12: a.s * b.e12 + a.e12 * b.s + a.e31 * b.e23 - a.e23 * b.e31,
-            e31: a.s * b.e31 - a.e12 * b.e23 + a.e31 * b.s + a.e23 * b.e12,
-            e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12 + a.e23 * b.s,
-            e0123: a.s * b.e0123
-                + a.e01 * b.e23
-                + a.e02 * b.e31
-                + a.e03 * b.e12
-                + a.e12 * b.e03
-                + a.e31 * b.e02
-                + a.e23 * b.e01
-                + a.e0123 * b.s,
-        }
+/// Geometric product `Motor * Motor -> Motor`. The expansion the hand-written kernel is checked
+/// against.
+#[cfg_attr(not(test), allow(dead_code))]
+#[inline]
+pub(crate) fn geometric_motor_motor<T: Scalar>(a: Motor<T>, b: Motor<T>) -> Motor<T> {
+    Motor {
+        s: a.s * b.s - a.e12 * b.e12 - a.e31 * b.e31 - a.e23 * b.e23,
+        e01: a.s * b.e01 + a.e01 * b.s - a.e02 * b.e12 + a.e03 * b.e31 + a.e12 * b.e02
+            - a.e31 * b.e03
+            - a.e23 * b.e0123
+            - a.e0123 * b.e23,
+        e02: a.s * b.e02 + a.e01 * b.e12 + a.e02 * b.s
+            - a.e03 * b.e23
+            - a.e12 * b.e01
+            - a.e31 * b.e0123
+            + a.e23 * b.e03
+            - a.e0123 * b.e31,
+        e03: a.s * b.e03 - a.e01 * b.e31 + a.e02 * b.e23 + a.e03 * b.s - a.e12 * b.e0123
+            + a.e31 * b.e01
+            - a.e23 * b.e02
+            - a.e0123 * b.e12,
+        e12: a.s * b.e12 + a.e12 * b.s + a.e31 * b.e23 - a.e23 * b.e31,
+        e31: a.s * b.e31 - a.e12 * b.e23 + a.e31 * b.s + a.e23 * b.e12,
+        e23: a.s * b.e23 + a.e12 * b.e31 - a.e31 * b.e12 + a.e23 * b.s,
+        e0123: a.s * b.e0123
+            + a.e01 * b.e23
+            + a.e02 * b.e31
+            + a.e03 * b.e12
+            + a.e12 * b.e03
+            + a.e31 * b.e02
+            + a.e23 * b.e01
+            + a.e0123 * b.s,
     }
 }
 
@@ -1481,159 +1479,151 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Multivector<T> {
     }
 }
 
-/// Geometric product `Multivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
-    type Output = Multivector<T>;
-    #[inline]
-    fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        let a = self;
-        Multivector {
-            s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
-                - a.e12 * b.e12
-                - a.e31 * b.e31
-                - a.e23 * b.e23
-                - a.e123 * b.e123,
-            e0: a.s * b.e0 + a.e0 * b.s - a.e1 * b.e01 - a.e2 * b.e02 - a.e3 * b.e03
-                + a.e01 * b.e1
-                + a.e02 * b.e2
-                + a.e03 * b.e3
-                + a.e12 * b.e021
-                + a.e31 * b.e013
-                + a.e23 * b.e032
-                + a.e021 * b.e12
-                + a.e013 * b.e31
-                + a.e032 * b.e23
-                + a.e123 * b.e0123
-                - a.e0123 * b.e123,
-            e1: a.s * b.e1 + a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2
-                - a.e31 * b.e3
-                - a.e23 * b.e123
-                - a.e123 * b.e23,
-            e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s
-                - a.e3 * b.e23
-                - a.e12 * b.e1
-                - a.e31 * b.e123
-                + a.e23 * b.e3
-                - a.e123 * b.e31,
-            e3: a.s * b.e3 - a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s - a.e12 * b.e123
-                + a.e31 * b.e1
-                - a.e23 * b.e2
-                - a.e123 * b.e12,
-            e01: a.s * b.e01 + a.e0 * b.e1 - a.e1 * b.e0 - a.e2 * b.e021
-                + a.e3 * b.e013
-                + a.e01 * b.s
-                - a.e02 * b.e12
-                + a.e03 * b.e31
-                + a.e12 * b.e02
-                - a.e31 * b.e03
-                - a.e23 * b.e0123
-                - a.e021 * b.e2
-                + a.e013 * b.e3
-                + a.e032 * b.e123
-                - a.e123 * b.e032
-                - a.e0123 * b.e23,
-            e02: a.s * b.e02 + a.e0 * b.e2 + a.e1 * b.e021 - a.e2 * b.e0 - a.e3 * b.e032
-                + a.e01 * b.e12
-                + a.e02 * b.s
-                - a.e03 * b.e23
-                - a.e12 * b.e01
-                - a.e31 * b.e0123
-                + a.e23 * b.e03
-                + a.e021 * b.e1
-                + a.e013 * b.e123
-                - a.e032 * b.e3
-                - a.e123 * b.e013
-                - a.e0123 * b.e31,
-            e03: a.s * b.e03 + a.e0 * b.e3 - a.e1 * b.e013 + a.e2 * b.e032
-                - a.e3 * b.e0
-                - a.e01 * b.e31
-                + a.e02 * b.e23
-                + a.e03 * b.s
-                - a.e12 * b.e0123
-                + a.e31 * b.e01
-                - a.e23 * b.e02
-                + a.e021 * b.e123
-                - a.e013 * b.e1
-                + a.e032 * b.e2
-                - a.e123 * b.e021
-                - a.e0123 * b.e12,
-            e12: a.s * b.e12 + a.e1 * b.e2 - a.e2 * b.e1
-                + a.e3 * b.e123
-                + a.e12 * b.s
-                + a.e31 * b.e23
-                - a.e23 * b.e31
-                + a.e123 * b.e3,
-            e31: a.s * b.e31 - a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1 - a.e12 * b.e23
-                + a.e31 * b.s
-                + a.e23 * b.e12
-                + a.e123 * b.e2,
-            e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2 + a.e12 * b.e31
-                - a.e31 * b.e12
-                + a.e23 * b.s
-                + a.e123 * b.e1,
-            e021: a.s * b.e021 - a.e0 * b.e12 + a.e1 * b.e02 - a.e2 * b.e01 + a.e3 * b.e0123
-                - a.e01 * b.e2
-                + a.e02 * b.e1
-                - a.e03 * b.e123
-                - a.e12 * b.e0
-                + a.e31 * b.e032
-                - a.e23 * b.e013
-                + a.e021 * b.s
-                + a.e013 * b.e23
-                - a.e032 * b.e31
-                + a.e123 * b.e03
-                - a.e0123 * b.e3,
-            e013: a.s * b.e013 - a.e0 * b.e31 - a.e1 * b.e03
-                + a.e2 * b.e0123
-                + a.e3 * b.e01
-                + a.e01 * b.e3
-                - a.e02 * b.e123
-                - a.e03 * b.e1
-                - a.e12 * b.e032
-                - a.e31 * b.e0
-                + a.e23 * b.e021
-                - a.e021 * b.e23
-                + a.e013 * b.s
-                + a.e032 * b.e12
-                + a.e123 * b.e02
-                - a.e0123 * b.e2,
-            e032: a.s * b.e032 - a.e0 * b.e23 + a.e1 * b.e0123 + a.e2 * b.e03
-                - a.e3 * b.e02
-                - a.e01 * b.e123
-                - a.e02 * b.e3
-                + a.e03 * b.e2
-                + a.e12 * b.e013
-                - a.e31 * b.e021
-                - a.e23 * b.e0
-                + a.e021 * b.e31
-                - a.e013 * b.e12
-                + a.e032 * b.s
-                + a.e123 * b.e01
-                - a.e0123 * b.e1,
-            e123: a.s * b.e123
-                + a.e1 * b.e23
-                + a.e2 * b.e31
-                + a.e3 * b.e12
-                + a.e12 * b.e3
-                + a.e31 * b.e2
-                + a.e23 * b.e1
-                + a.e123 * b.s,
-            e0123: a.s * b.e0123
-                + a.e0 * b.e123
-                + a.e1 * b.e032
-                + a.e2 * b.e013
-                + a.e3 * b.e021
-                + a.e01 * b.e23
-                + a.e02 * b.e31
-                + a.e03 * b.e12
-                + a.e12 * b.e03
-                + a.e31 * b.e02
-                + a.e23 * b.e01
-                - a.e021 * b.e3
-                - a.e013 * b.e2
-                - a.e032 * b.e1
-                - a.e123 * b.e0
-                + a.e0123 * b.s,
-        }
+/// Geometric product `Multivector * Multivector -> Multivector`. The expansion the hand-written
+/// kernel is checked against.
+#[cfg_attr(not(test), allow(dead_code))]
+#[inline]
+pub(crate) fn geometric_multivector_multivector<T: Scalar>(
+    a: Multivector<T>,
+    b: Multivector<T>,
+) -> Multivector<T> {
+    Multivector {
+        s: a.s * b.s + a.e1 * b.e1 + a.e2 * b.e2 + a.e3 * b.e3
+            - a.e12 * b.e12
+            - a.e31 * b.e31
+            - a.e23 * b.e23
+            - a.e123 * b.e123,
+        e0: a.s * b.e0 + a.e0 * b.s - a.e1 * b.e01 - a.e2 * b.e02 - a.e3 * b.e03
+            + a.e01 * b.e1
+            + a.e02 * b.e2
+            + a.e03 * b.e3
+            + a.e12 * b.e021
+            + a.e31 * b.e013
+            + a.e23 * b.e032
+            + a.e021 * b.e12
+            + a.e013 * b.e31
+            + a.e032 * b.e23
+            + a.e123 * b.e0123
+            - a.e0123 * b.e123,
+        e1: a.s * b.e1 + a.e1 * b.s - a.e2 * b.e12 + a.e3 * b.e31 + a.e12 * b.e2
+            - a.e31 * b.e3
+            - a.e23 * b.e123
+            - a.e123 * b.e23,
+        e2: a.s * b.e2 + a.e1 * b.e12 + a.e2 * b.s - a.e3 * b.e23 - a.e12 * b.e1 - a.e31 * b.e123
+            + a.e23 * b.e3
+            - a.e123 * b.e31,
+        e3: a.s * b.e3 - a.e1 * b.e31 + a.e2 * b.e23 + a.e3 * b.s - a.e12 * b.e123 + a.e31 * b.e1
+            - a.e23 * b.e2
+            - a.e123 * b.e12,
+        e01: a.s * b.e01 + a.e0 * b.e1 - a.e1 * b.e0 - a.e2 * b.e021 + a.e3 * b.e013 + a.e01 * b.s
+            - a.e02 * b.e12
+            + a.e03 * b.e31
+            + a.e12 * b.e02
+            - a.e31 * b.e03
+            - a.e23 * b.e0123
+            - a.e021 * b.e2
+            + a.e013 * b.e3
+            + a.e032 * b.e123
+            - a.e123 * b.e032
+            - a.e0123 * b.e23,
+        e02: a.s * b.e02 + a.e0 * b.e2 + a.e1 * b.e021 - a.e2 * b.e0 - a.e3 * b.e032
+            + a.e01 * b.e12
+            + a.e02 * b.s
+            - a.e03 * b.e23
+            - a.e12 * b.e01
+            - a.e31 * b.e0123
+            + a.e23 * b.e03
+            + a.e021 * b.e1
+            + a.e013 * b.e123
+            - a.e032 * b.e3
+            - a.e123 * b.e013
+            - a.e0123 * b.e31,
+        e03: a.s * b.e03 + a.e0 * b.e3 - a.e1 * b.e013 + a.e2 * b.e032
+            - a.e3 * b.e0
+            - a.e01 * b.e31
+            + a.e02 * b.e23
+            + a.e03 * b.s
+            - a.e12 * b.e0123
+            + a.e31 * b.e01
+            - a.e23 * b.e02
+            + a.e021 * b.e123
+            - a.e013 * b.e1
+            + a.e032 * b.e2
+            - a.e123 * b.e021
+            - a.e0123 * b.e12,
+        e12: a.s * b.e12 + a.e1 * b.e2 - a.e2 * b.e1 + a.e3 * b.e123 + a.e12 * b.s + a.e31 * b.e23
+            - a.e23 * b.e31
+            + a.e123 * b.e3,
+        e31: a.s * b.e31 - a.e1 * b.e3 + a.e2 * b.e123 + a.e3 * b.e1 - a.e12 * b.e23
+            + a.e31 * b.s
+            + a.e23 * b.e12
+            + a.e123 * b.e2,
+        e23: a.s * b.e23 + a.e1 * b.e123 + a.e2 * b.e3 - a.e3 * b.e2 + a.e12 * b.e31
+            - a.e31 * b.e12
+            + a.e23 * b.s
+            + a.e123 * b.e1,
+        e021: a.s * b.e021 - a.e0 * b.e12 + a.e1 * b.e02 - a.e2 * b.e01 + a.e3 * b.e0123
+            - a.e01 * b.e2
+            + a.e02 * b.e1
+            - a.e03 * b.e123
+            - a.e12 * b.e0
+            + a.e31 * b.e032
+            - a.e23 * b.e013
+            + a.e021 * b.s
+            + a.e013 * b.e23
+            - a.e032 * b.e31
+            + a.e123 * b.e03
+            - a.e0123 * b.e3,
+        e013: a.s * b.e013 - a.e0 * b.e31 - a.e1 * b.e03
+            + a.e2 * b.e0123
+            + a.e3 * b.e01
+            + a.e01 * b.e3
+            - a.e02 * b.e123
+            - a.e03 * b.e1
+            - a.e12 * b.e032
+            - a.e31 * b.e0
+            + a.e23 * b.e021
+            - a.e021 * b.e23
+            + a.e013 * b.s
+            + a.e032 * b.e12
+            + a.e123 * b.e02
+            - a.e0123 * b.e2,
+        e032: a.s * b.e032 - a.e0 * b.e23 + a.e1 * b.e0123 + a.e2 * b.e03
+            - a.e3 * b.e02
+            - a.e01 * b.e123
+            - a.e02 * b.e3
+            + a.e03 * b.e2
+            + a.e12 * b.e013
+            - a.e31 * b.e021
+            - a.e23 * b.e0
+            + a.e021 * b.e31
+            - a.e013 * b.e12
+            + a.e032 * b.s
+            + a.e123 * b.e01
+            - a.e0123 * b.e1,
+        e123: a.s * b.e123
+            + a.e1 * b.e23
+            + a.e2 * b.e31
+            + a.e3 * b.e12
+            + a.e12 * b.e3
+            + a.e31 * b.e2
+            + a.e23 * b.e1
+            + a.e123 * b.s,
+        e0123: a.s * b.e0123
+            + a.e0 * b.e123
+            + a.e1 * b.e032
+            + a.e2 * b.e013
+            + a.e3 * b.e021
+            + a.e01 * b.e23
+            + a.e02 * b.e31
+            + a.e03 * b.e12
+            + a.e12 * b.e03
+            + a.e31 * b.e02
+            + a.e23 * b.e01
+            - a.e021 * b.e3
+            - a.e013 * b.e2
+            - a.e032 * b.e1
+            - a.e123 * b.e0
+            + a.e0123 * b.s,
     }
 }

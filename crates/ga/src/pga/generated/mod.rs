@@ -13,3 +13,8 @@ mod sandwich;
 mod types;
 
 pub use types::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
+
+#[cfg_attr(not(test), allow(unused_imports))]
+pub(crate) use geometric::geometric_motor_motor;
+#[cfg_attr(not(test), allow(unused_imports))]
+pub(crate) use geometric::geometric_multivector_multivector;
