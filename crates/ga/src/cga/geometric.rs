@@ -31,10 +31,10 @@ const LANES: [[usize; 8]; 4] = [
     [15, 21, 24, 28, 25, 29, 30, 31],
 ];
 
-/// The grade involution of a G3 multivector in storage order: grades 1 and 3 negated.
+/// The grade involution of a G3 multivector in storage order (G3's `grade_involution`).
 #[inline]
-fn involution<T: Scalar>(a: [T; 8]) -> [T; 8] {
-    [a[0], -a[1], -a[2], a[3], -a[4], a[5], a[6], -a[7]]
+fn involution<T: Scalar>(c: [T; 8]) -> [T; 8] {
+    crate::g3::Multivector { c }.grade_involution().c
 }
 
 /// `a` as its four G3 parts.
@@ -98,12 +98,7 @@ impl<T: Scalar> MulAssign for Multivector<T> {
 mod tests {
     use super::*;
     use crate::cga::generated::geometric_multivector_multivector;
-    use crate::g3::geometric::tests::coefficients;
-
-    fn close(a: [f64; 32], b: [f64; 32], tol: f64) -> bool {
-        let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= tol * scale)
-    }
+    use crate::g3::geometric::tests::{close, coefficients};
 
     /// The kernel against the generated 1,024-term expansion, in both precisions.
     #[test]

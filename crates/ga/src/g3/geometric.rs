@@ -112,6 +112,12 @@ pub(crate) mod tests {
     use super::*;
     use crate::g3::generated::{geometric_multivector_multivector, geometric_rotor_rotor};
 
+    /// Whether `a` equals `b` within `tol` relative to `b`'s largest coefficient (at least 1).
+    pub(crate) fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
+        let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= tol * scale)
+    }
+
     /// A fixed sequence of coefficients in [-2, 2) (an LCG: no dependency, same every run).
     pub(crate) fn coefficients(seed: u64) -> impl Iterator<Item = f64> {
         let mut state = seed;

@@ -47,10 +47,10 @@ fn split<T: Scalar>(a: Multivector<T>) -> ([T; 8], [T; 8]) {
     )
 }
 
-/// The grade involution of a G3 multivector in storage order: grades 1 and 3 negated.
+/// The grade involution of a G3 multivector in storage order (G3's `grade_involution`).
 #[inline]
-fn involution<T: Scalar>(a: [T; 8]) -> [T; 8] {
-    [a[0], -a[1], -a[2], a[3], -a[4], a[5], a[6], -a[7]]
+fn involution<T: Scalar>(c: [T; 8]) -> [T; 8] {
+    crate::g3::Multivector { c }.grade_involution().c
 }
 
 /// Geometric product `Multivector * Multivector -> Multivector`: `A B + e0 (Â B' + A' B)`, the
@@ -130,13 +130,8 @@ impl<T: Scalar> MulAssign for Multivector<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::g3::geometric::tests::coefficients;
+    use crate::g3::geometric::tests::{close, coefficients};
     use crate::pga::generated::{geometric_motor_motor, geometric_multivector_multivector};
-
-    fn close<const N: usize>(a: [f64; N], b: [f64; N], tol: f64) -> bool {
-        let scale = b.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-        a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= tol * scale)
-    }
 
     /// Both kernels against the generated 192- and 64-term expansions, in both precisions.
     #[test]
@@ -167,18 +162,13 @@ mod tests {
     /// The relabelling alone: each basis blade times each is the Cayley table's entry.
     #[test]
     fn basis_products_are_the_cayley_table() {
+        let e = |k: usize| {
+            Multivector::<f64>::from_array(core::array::from_fn(|n| f64::from(u8::from(n == k))))
+        };
         for i in 0..16 {
             for j in 0..16 {
-                let e = |k: usize| {
-                    Multivector::<f64>::from_array(core::array::from_fn(|n| {
-                        f64::from(u8::from(n == k))
-                    }))
-                };
-                assert_eq!(
-                    (e(i) * e(j)).to_array(),
-                    geometric_multivector_multivector(e(i), e(j)).to_array(),
-                    "{i} {j}"
-                );
+                let want = geometric_multivector_multivector(e(i), e(j)).to_array();
+                assert_eq!((e(i) * e(j)).to_array(), want, "{i} {j}");
             }
         }
     }
