@@ -64,6 +64,8 @@ use wedge_benches::{
 /// Inputs per iteration: 256 pairs of the largest type (two `Multivector<f64>`, 128 bytes)
 /// make 32 KiB, the size of L1.
 const BATCH: usize = 256;
+/// Points a call of the one-motor-many-points rows.
+const POINTS: usize = 64;
 
 /// One comparison: which operation, at which precision, held to what.
 struct Spec {
@@ -543,6 +545,31 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                 |c| c.motors.0.transform_point(c.points.0),
                 $affine,
                 |a| a.maps.0.$transform(a.points.0)
+            );
+            // One motor on many points (64 a call): the sandwich's matrix once, then a 4x4
+            // product a point, beside the affine map on the same points.
+            let (points, vectors): ([_; POINTS], [_; POINTS]) = (
+                core::array::from_fn(|i| $pga[i].points.0),
+                core::array::from_fn(|i| $affine[i].points.0),
+            );
+            pair!(
+                "pga_motor_points_vs_affine_points",
+                $precision,
+                within,
+                $pga,
+                move |c| {
+                    let mut moved = points;
+                    c.motors.0.transform_points(&mut moved);
+                    moved
+                },
+                $affine,
+                move |a| {
+                    let mut moved = vectors;
+                    for p in &mut moved {
+                        *p = a.maps.0.$transform(*p);
+                    }
+                    moved
+                }
             );
             pair!(
                 "pga_motor_mul_vs_affine_mul",

@@ -10,6 +10,8 @@ mod sealed {
         fn rotor_product(a: [Self; 4], b: [Self; 4]) -> [Self; 4];
         /// The reverse `[s, -e12, -e23, -e31]` of a rotor.
         fn rotor_reverse(a: [Self; 4]) -> [Self; 4];
+        /// `Σ_k columns[k] p[k]`: a 4×4 matrix, by columns, times a 4-vector.
+        fn map_point(columns: &[[Self; 4]; 4], p: [Self; 4]) -> [Self; 4];
     }
 }
 
@@ -58,6 +60,10 @@ impl sealed::Kernels for f32 {
     fn rotor_reverse(a: [f32; 4]) -> [f32; 4] {
         with_simd!(crate::g3::simd::rotor_reverse_f32(a), [a[0], -a[1], -a[2], -a[3]])
     }
+    #[inline]
+    fn map_point(columns: &[[f32; 4]; 4], p: [f32; 4]) -> [f32; 4] {
+        with_simd!(crate::pga::simd::map_point_f32(columns, p), portable_map_point(columns, p))
+    }
 }
 
 impl sealed::Kernels for f64 {
@@ -74,6 +80,21 @@ impl sealed::Kernels for f64 {
     fn rotor_reverse(a: [f64; 4]) -> [f64; 4] {
         [a[0], -a[1], -a[2], -a[3]]
     }
+    #[inline]
+    fn map_point(columns: &[[f64; 4]; 4], p: [f64; 4]) -> [f64; 4] {
+        with_simd!(crate::pga::simd::map_point_f64(columns, p), portable_map_point(columns, p))
+    }
+}
+
+#[allow(dead_code)] // unused when every precision has a SIMD kernel
+#[inline]
+fn portable_map_point<T: Scalar>(c: &[[T; 4]; 4], p: [T; 4]) -> [T; 4] {
+    core::array::from_fn(|l| {
+        c[3][l].mul_add_if_fma(
+            p[3],
+            c[2][l].mul_add_if_fma(p[2], c[1][l].mul_add_if_fma(p[1], c[0][l] * p[0])),
+        )
+    })
 }
 
 #[inline]

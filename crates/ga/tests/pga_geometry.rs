@@ -295,6 +295,41 @@ fn motors_move_points_like_glam_affine_maps() {
 }
 
 #[test]
+fn transform_point_and_transform_points_are_the_sandwich() {
+    let mut rng = rng("transform_points");
+    for case in 0..CASES {
+        // Unit motors, and scaled ones (the map then scales the weight, like the sandwich).
+        let (m, _) = random_motor(&mut rng);
+        let m = if case % 2 == 0 { m } else { m * rng.random_range(0.5..2.0) };
+        let mut points: Vec<Point<f64>> = (0..5)
+            .map(|_| Point::from_array([0; 4].map(|_| rng.random_range(-10.0..10.0))))
+            .collect();
+        // An ideal point (a direction) and a Euclidean one with weight 1.
+        points.push(Point::direction(1.0, -2.0, 0.5));
+        points.push(Point::from_xyz_array(vec3(&mut rng, 10.0)));
+        // The generated sandwich, term by term, is the reference of both.
+        let want: Vec<[f64; 4]> = points.iter().map(|&p| m.sandwich(p).to_array()).collect();
+        let one_by_one: Vec<Point<f64>> = points.iter().map(|&p| m.transform_point(p)).collect();
+        m.transform_points(&mut points);
+        for ((got, single), want) in points.iter().zip(&one_by_one).zip(&want) {
+            let scale = want.iter().fold(1.0_f64, |a, x| a.max(x.abs()));
+            let unit = |p: &Point<f64>| p.to_array().map(|x| x / scale);
+            assert_close(&unit(got), &want.map(|x| x / scale), 1e-13);
+            assert_close(&unit(single), &want.map(|x| x / scale), 1e-13);
+        }
+    }
+    // f32 takes the same path.
+    let m = Motor::<f32>::from_rotation_translation(
+        Rotor::from_axis_angle([0.0, 0.0, 1.0], core::f32::consts::FRAC_PI_2),
+        [1.0, 2.0, 3.0],
+    );
+    let mut p = [Point::<f32>::from_xyz(1.0, 0.0, 0.0)];
+    m.transform_points(&mut p);
+    let xyz = p[0].to_xyz().unwrap();
+    assert!(xyz.iter().zip([1.0, 3.0, 3.0]).all(|(a, b)| (a - b).abs() < 1e-6), "{xyz:?}");
+}
+
+#[test]
 fn rotation_about_an_arbitrary_line_matches_glam() {
     let mut rng = rng("line_rotation");
     for _ in 0..CASES {

@@ -104,5 +104,7 @@ pub mod geometry;
 #[cfg(feature = "glam")]
 mod glam_interop;
 pub mod motor;
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+pub(crate) mod simd;
 
 pub use generated::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
