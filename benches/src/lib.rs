@@ -154,37 +154,7 @@ pub fn median(values: &mut [f64]) -> f64 {
     values[values.len() / 2]
 }
 
-/// The CPU model string from `/proc/cpuinfo`, or `"unknown"`.
-#[must_use]
-pub fn cpu_model() -> String {
-    fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|info| {
-            info.lines()
-                .find(|line| line.starts_with("model name"))
-                .and_then(|line| line.split_once(':'))
-                .map(|(_, model)| model.trim().to_owned())
-        })
-        .unwrap_or_else(|| "unknown".to_owned())
-}
-
-/// The x86-64 target features this build compiled in, of those that change the code the
-/// kernels, the BVH and the compiler's vectoriser choose, e.g. `"sse4.2 avx avx2 fma"` for the
-/// workspace's `x86-64-v3` baseline, more with `RUSTFLAGS="-C target-cpu=native"`, `"none"`
-/// for the plain `x86-64` baseline or another architecture.
-#[must_use]
-pub fn target_features() -> String {
-    let compiled_in = [
-        ("sse4.2", cfg!(target_feature = "sse4.2")),
-        ("avx", cfg!(target_feature = "avx")),
-        ("avx2", cfg!(target_feature = "avx2")),
-        ("fma", cfg!(target_feature = "fma")),
-        ("avx512f", cfg!(target_feature = "avx512f")),
-        ("avx512vl", cfg!(target_feature = "avx512vl")),
-    ];
-    let names: Vec<&str> = compiled_in.iter().filter(|(_, on)| *on).map(|(n, _)| *n).collect();
-    if names.is_empty() { "none".to_owned() } else { names.join(" ") }
-}
+pub use backends::machine::{cpu_model, target_features};
 
 /// The machine description the benches write into their results: the CPU model and, in
 /// brackets, the target features the build used ([`target_features`]), so that a figure

@@ -90,6 +90,8 @@
 
 #![deny(missing_docs)]
 
+pub mod machine;
+
 pub use intersect::{Algebra, Guarantees, Method};
 
 use intersect::Intersector;

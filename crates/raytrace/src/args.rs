@@ -2,18 +2,13 @@
 //! clap's errors turned into the programs' one line without losing what clap knows (the
 //! missing arguments, the possible values, the suggestion).
 
-use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
 /// How many worker threads per core `--threads` may ask for: more only adds the cost of
 /// starting them (10,000 threads took half a minute to start for a one-triangle scene).
 pub const THREADS_PER_CORE: usize = 4;
 
-/// The cores this process may use (`std::thread::available_parallelism`, 1 if unknown).
-#[must_use]
-pub fn cores() -> usize {
-    std::thread::available_parallelism().map_or(1, NonZeroUsize::get)
-}
+pub use backends::machine::cores;
 
 /// Checks a `--threads` value against `cores`: `0` (one thread per core) up to
 /// [`THREADS_PER_CORE`] per core.

@@ -7,6 +7,7 @@
 pub mod args;
 pub mod paths;
 pub mod progress;
+pub mod record;
 pub mod signals;
 
 use std::path::Path;
@@ -17,6 +18,8 @@ use anyhow::Context as _;
 use backends::Precision;
 use render::output::{AtomicFile, Written};
 use scene::Mesh;
+
+use record::{CameraRecord, Record};
 
 pub use args::{clap_exit, parse_vec3};
 pub use paths::{Named, UsageError};
@@ -38,7 +41,7 @@ pub struct Timings {
 }
 
 /// The figures both programs print and write with `--stats` (the JSON keys are the field
-/// names).
+/// names; the run record's keys sit beside them).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Stats {
     /// Triangles in the mesh.
@@ -63,6 +66,12 @@ pub struct Stats {
     pub precision: String,
     /// Threads used for tracing.
     pub threads: usize,
+    /// The camera of a rendered frame (`raytrace`), however it was placed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub camera: Option<CameraRecord>,
+    /// The run record (with `--stats`): program, commit, command, inputs, output, machine.
+    #[serde(flatten)]
+    pub record: Option<Record>,
 }
 
 impl Stats {
@@ -90,13 +99,17 @@ impl Stats {
             backend: backend.to_owned(),
             precision: precision.name().to_owned(),
             threads,
+            camera: None,
+            record: None,
         }
     }
 
-    /// The one-line summary the programs print.
+    /// The one-line summary the programs print; with a camera, the options that repeat its
+    /// view (so that the view `--camera auto` chose can be given again).
     #[must_use]
     pub fn summary(&self) -> String {
-        format!(
+        let camera = self.camera.map(|c| format!(", camera {}", c.options()));
+        let figures = format!(
             "{} triangles, load {:.1} ms, BVH build {:.1} ms, trace {:.1} ms, write {:.1} ms, \
              total {:.1} ms, {} rays, {:.2} Mrays/s ({} {}, {} threads)",
             self.triangles,
@@ -110,7 +123,8 @@ impl Stats {
             self.backend,
             self.precision,
             self.threads
-        )
+        );
+        figures + &camera.unwrap_or_default()
     }
 
     /// Writes the figures as pretty-printed JSON into `file` (created earlier, so that an

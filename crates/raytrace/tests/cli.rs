@@ -255,23 +255,66 @@ fn stats_json_has_exactly_the_documented_keys() {
         &"-q",
     ]));
     let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
-    let obj = v.as_object().unwrap();
-    let mut keys: Vec<&str> = obj.keys().map(String::as_str).collect();
+    let fields = v.as_object().unwrap();
+    let mut keys: Vec<&str> = fields.keys().map(String::as_str).collect();
     keys.sort_unstable();
     let expected = [
         "backend",
         "build_ms",
+        "camera",
+        "command",
+        "commit",
+        "inputs",
         "load_ms",
+        "machine",
         "mrays_per_s",
+        "output",
         "precision",
+        "program",
         "rays",
+        "started",
         "threads",
         "trace_ms",
         "triangles",
+        "version",
         "wall_ms",
         "write_ms",
     ];
     assert_eq!(keys, expected);
+    // The run record: enough to repeat the run and to know the input is the same file.
+    assert_eq!(v["program"], "raytrace");
+    assert_eq!(v["version"], env!("CARGO_PKG_VERSION"));
+    // Built from a checkout: the commit is a 40-digit hash, `-dirty` when modified; `null`
+    // only where git cannot name one (a source archive).
+    if let Some(commit) = v["commit"].as_str() {
+        let hash = &commit[..40.min(commit.len())];
+        assert!(hash.len() == 40 && hash.bytes().all(|b| b.is_ascii_hexdigit()), "{commit}");
+        assert!(commit.len() == 40 || &commit[40..] == "-dirty", "{commit}");
+    } else {
+        let git = Command::new("git").args(["rev-parse", "HEAD"]).output();
+        assert!(!git.is_ok_and(|o| o.status.success()), "a checkout, but no commit recorded");
+    }
+    assert_eq!(v["command"][1], obj.display().to_string());
+    assert_eq!(v["command"].as_array().unwrap().len(), 14);
+    let started = v["started"].as_str().unwrap();
+    assert!(humantime::parse_rfc3339(started).is_ok(), "{started}");
+    let input = &v["inputs"][0];
+    assert_eq!((input["role"].as_str(), input["path"].as_str()), (Some("mesh"), obj.to_str()));
+    assert_eq!(input["bytes"], SQUARE.len());
+    let sha = input["sha256"].as_str().unwrap();
+    assert!(sha.len() == 64 && sha.bytes().all(|b| b.is_ascii_hexdigit()), "{sha}");
+    let output = &v["output"];
+    assert_eq!(output["path"].as_str(), dir.path().join("a.png").to_str());
+    assert_eq!((output["width"].as_u64(), output["height"].as_u64()), (Some(10), Some(8)));
+    assert_eq!(output["mode"], "alpha");
+    assert!(v["machine"]["cores"].as_u64().unwrap() >= 1);
+    assert!(!v["machine"]["cpu"].as_str().unwrap().is_empty());
+    assert!(v["machine"]["target_features"].is_string());
+    // The auto camera frames the square from -z.
+    let eye = &v["camera"]["eye"];
+    assert!(eye[2].as_f64().unwrap() < 4.0, "{eye}");
+    assert_eq!(v["camera"]["up"], serde_json::json!([0.0, 1.0, 0.0]));
+    assert_eq!(v["camera"]["fov_deg"], 45.0);
     assert_eq!(v["triangles"], 2);
     assert_eq!(v["rays"], 80);
     assert_eq!(v["threads"], 2);
@@ -286,6 +329,37 @@ fn stats_json_has_exactly_the_documented_keys() {
         .map(|k| v[k].as_f64().unwrap())
         .sum();
     assert!(v["wall_ms"].as_f64().unwrap() >= phases, "{v}");
+}
+
+#[test]
+fn the_summary_prints_the_auto_camera_so_that_the_view_can_be_repeated() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "tri.obj", UPPER_RIGHT);
+    let (auto, again) = (dir.path().join("auto.npy"), dir.path().join("again.npy"));
+    let line = ok(&raytrace(&[&obj, &auto, &"24", &"16", &"--mode", &"depth"]));
+    let options = line.split(", camera ").nth(1).expect("camera in the summary");
+    let options = options.split(" -> ").next().unwrap();
+    assert!(options.starts_with("--eye ") && options.contains(" --fov 45"), "{line}");
+    let mut args: Vec<String> = vec![
+        obj.display().to_string(),
+        again.display().to_string(),
+        "24".into(),
+        "16".into(),
+        "--mode".into(),
+        "depth".into(),
+        // The origin placement, overridden by every option printed.
+        "--camera".into(),
+        "origin".into(),
+    ];
+    args.extend(options.split(' ').map(str::to_owned));
+    let refs: Vec<&dyn AsRef<std::ffi::OsStr>> =
+        args.iter().map(|a| a as &dyn AsRef<std::ffi::OsStr>).collect();
+    ok(&raytrace(&refs));
+    let (a, b) = (std::fs::read(&auto).unwrap(), std::fs::read(&again).unwrap());
+    assert_eq!(a, b, "the printed camera renders the same depths");
+    // Something was hit, so the comparison says something.
+    let depths = npy::read_f64_matrix(&a, 24).unwrap();
+    assert!(depths.values.iter().any(|d| d.is_finite() && *d > 0.0));
 }
 
 /// Rays from `(x, y, 0)` along `(0, 0, 2)` at the square: `t = 2` in units of the direction.
@@ -358,6 +432,18 @@ fn raycast_round_trip_f32_and_f64() {
             let v: serde_json::Value =
                 serde_json::from_slice(&std::fs::read(&stats).unwrap()).unwrap();
             assert_eq!(v["rays"], 6);
+            assert_eq!(v["program"], "raycast");
+            let roles: Vec<&str> = v["inputs"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|f| f["role"].as_str().unwrap())
+                .collect();
+            assert_eq!(roles, ["mesh", "rays"]);
+            let rays_bytes = std::fs::metadata(&rays_path).unwrap().len();
+            assert_eq!(v["inputs"][1]["bytes"].as_u64(), Some(rays_bytes));
+            assert_eq!(v["output"]["shape"], serde_json::json!([6, 4]));
+            assert!(v.get("camera").is_none(), "raycast has no camera: {v}");
         }
         let any_path = dir.path().join("any.npy");
         ok(&raycast(&[&obj, &rays_path, &any_path, &"--any-hit", &"-q"]));

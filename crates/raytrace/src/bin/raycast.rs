@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 
 use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
@@ -14,6 +14,7 @@ use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
+use raytrace::record::{OutputRecord, Record};
 use raytrace::{Named, Stats, Timings, UsageError};
 use render::output::{AtomicFile, npy};
 use scene::Mesh;
@@ -64,7 +65,7 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
-    let start = Instant::now();
+    let start = (Instant::now(), SystemTime::now());
     raytrace::one_line_panics();
     match Cli::try_parse() {
         Ok(cli) => raytrace::exit(run(&cli, start)),
@@ -72,7 +73,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
+fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()> {
     if !has_npy_extension(&cli.hits) {
         let hits = cli.hits.display();
         let e = format!("{hits}: the hits are written as NumPy arrays: use a .npy extension");
@@ -111,9 +112,16 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let write = t.elapsed();
     let time = Timings { load, build, trace, write, wall: start.elapsed() };
     let n = rays.rows as u64;
-    let stats = Stats::new(mesh.len(), n, time, name, cli.precision, threads);
+    let mut stats = Stats::new(mesh.len(), n, time, name, cli.precision, threads);
     let mut written = vec![hits];
     if let Some(file) = stats_file {
+        let output = OutputRecord {
+            path: cli.hits.display().to_string(),
+            shape: Some([rays.rows, columns]),
+            ..OutputRecord::default()
+        };
+        let inputs = [("mesh", cli.input.as_path()), ("rays", cli.rays.as_path())];
+        stats.record = Some(Record::new("raycast", started, &inputs, output)?);
         written.push(stats.write_json(file)?);
     }
     render::output::commit_all(written)?;

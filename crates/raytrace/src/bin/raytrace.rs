@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
+use std::time::{Instant, SystemTime};
 
 use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
@@ -13,6 +13,7 @@ use clap::{Parser, ValueEnum};
 use intersect::Intersector;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
+use raytrace::record::{CameraRecord, OutputRecord, Record};
 use raytrace::{Named, Stats, Timings, UsageError};
 use render::camera::{Camera, DEFAULT_FOV_DEG};
 use render::frame::{Frame, MAX_SIDE, Mode};
@@ -124,7 +125,7 @@ enum CameraArg {
 }
 
 fn main() -> ExitCode {
-    let start = Instant::now();
+    let start = (Instant::now(), SystemTime::now());
     raytrace::one_line_panics();
     match Cli::try_parse() {
         Ok(cli) => raytrace::exit(run(&cli, start)),
@@ -132,7 +133,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
+fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()> {
     // Everything that can be checked without the mesh is checked before loading it, and the
     // output files are created (empty, temporary) before the work, so that a bad path fails
     // in a moment rather than after the render.
@@ -152,7 +153,7 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let t = Instant::now();
     let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
-    let camera = camera(cli, &mesh)?;
+    let (camera, placed) = camera(cli, &mesh)?;
 
     let job = RenderJob { mesh: &mesh, camera: &camera, frame: &mut frame, progress: &progress };
     let (name, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
@@ -163,9 +164,19 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let write = t.elapsed();
     let rays = u64::from(cli.width) * u64::from(cli.height);
     let time = Timings { load, build, trace, write, wall: start.elapsed() };
-    let stats = Stats::new(mesh.len(), rays, time, name, cli.precision, threads);
+    let mut stats = Stats::new(mesh.len(), rays, time, name, cli.precision, threads);
+    stats.camera = Some(placed);
     let mut written = vec![image];
     if let Some(file) = stats_file {
+        let output = OutputRecord {
+            path: cli.output.display().to_string(),
+            width: Some(cli.width),
+            height: Some(cli.height),
+            mode: cli.mode.to_possible_value().map(|v| v.get_name().to_owned()),
+            shape: None,
+        };
+        let inputs = [("mesh", cli.input.as_path())];
+        stats.record = Some(Record::new("raytrace", started, &inputs, output)?);
         written.push(stats.write_json(file)?);
     }
     render::output::commit_all(written)?;
@@ -176,8 +187,9 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The camera from `--camera`, then `--eye`, `--look-at`, `--up` and `--fov` on top.
-fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<Camera> {
+/// The camera from `--camera`, then `--eye`, `--look-at`, `--up` and `--fov` on top, and the
+/// options that place it again.
+fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<(Camera, CameraRecord)> {
     let aspect = f64::from(cli.width) / f64::from(cli.height);
     let base = match cli.camera {
         CameraArg::Auto => {
@@ -190,7 +202,9 @@ fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<Camera> {
     let eye = cli.eye.unwrap_or(base.0);
     let look_at = cli.look_at.unwrap_or(base.1);
     let up = cli.up.unwrap_or([0.0, 1.0, 0.0]);
-    Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")
+    let camera = Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")?;
+    let placed = CameraRecord::new(&camera, look_at, up);
+    Ok((camera, placed))
 }
 
 /// Builds the acceleration structure and renders: the part compiled once per back end.
