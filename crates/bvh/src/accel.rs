@@ -190,6 +190,39 @@ impl<I: Intersector> Accel<I> {
     #[must_use]
     #[inline]
     pub fn closest_hit_within(&self, ray: &Ray<I::Real>, t_max: I::Real) -> Option<Hit<I::Real>> {
+        self.closest_where(ray, t_max, |_| true)
+    }
+
+    /// The nearest hit along `ray` with `t_min <= t <= t_max` (and `t > 0`, as always), if
+    /// any: a segment of the ray, for shadow rays and the like. For `t_min <= 0` this is
+    /// [`Accel::closest_hit_within`], bit for bit; a NaN bound finds nothing.
+    ///
+    /// A ray meets a triangle's plane at most once, so each triangle has one candidate `t`:
+    /// rejecting the candidates before `t_min` triangle by triangle, inside the search, finds
+    /// exactly the nearest hit of the segment (the box tests still cull by `t_max` alone).
+    #[must_use]
+    #[inline]
+    pub fn closest_hit_between(
+        &self,
+        ray: &Ray<I::Real>,
+        t_min: I::Real,
+        t_max: I::Real,
+    ) -> Option<Hit<I::Real>> {
+        if t_min <= <I::Real as intersect::Real>::ZERO {
+            return self.closest_hit_within(ray, t_max);
+        }
+        self.closest_where(ray, t_max, |t| t >= t_min)
+    }
+
+    /// The search of the closest-hit queries: the nearest hit within `t_max` among those whose
+    /// `t` passes `accept`.
+    #[inline]
+    fn closest_where(
+        &self,
+        ray: &Ray<I::Real>,
+        t_max: I::Real,
+        accept: impl Fn(I::Real) -> bool,
+    ) -> Option<Hit<I::Real>> {
         let ray_data = self.intersector.prepare_ray(ray);
         let order = self.bvh.order();
         let mut best: Option<Hit<I::Real>> = None;
@@ -198,7 +231,9 @@ impl<I: Intersector> Accel<I> {
             for (k, prim) in self.prims[slots].iter().enumerate() {
                 // The kernel reports `t <= limit`: equal distances come through so that
                 // `nearer_than` can pick the lower index whatever the visiting order.
-                if let Some(h) = self.intersector.intersect(prim, ray, &ray_data, *limit) {
+                if let Some(h) = self.intersector.intersect(prim, ray, &ray_data, *limit)
+                    && accept(h.t)
+                {
                     let hit = Hit::new(order[first + k], h);
                     if best.is_none_or(|b| hit.nearer_than(&b)) {
                         best = Some(hit);
@@ -218,6 +253,48 @@ impl<I: Intersector> Accel<I> {
         self.bvh.any(ray, t_max, |slots| {
             self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &ray_data, t_max))
         })
+    }
+
+    /// Whether `ray` hits any triangle with `t_min <= t <= t_max` (and `t > 0`); for
+    /// `t_min <= 0` this is [`Accel::any_hit`]. Beyond 0 the kernels' `occludes` cannot say
+    /// where the hit is, so each candidate is found with `intersect` and its `t` checked.
+    #[must_use]
+    #[inline]
+    pub fn any_hit_between(&self, ray: &Ray<I::Real>, t_min: I::Real, t_max: I::Real) -> bool {
+        if t_min <= <I::Real as intersect::Real>::ZERO {
+            return self.any_hit(ray, t_max);
+        }
+        let ray_data = self.intersector.prepare_ray(ray);
+        self.bvh.any(ray, t_max, |slots| {
+            self.prims[slots].iter().any(|p| {
+                self.intersector.intersect(p, ray, &ray_data, t_max).is_some_and(|h| h.t >= t_min)
+            })
+        })
+    }
+
+    /// A triangle `ray` hits with `t_min <= t <= t_max` (and `t > 0`), if any: the first one
+    /// the search meets, not the nearest (its index in the input order). It answers what
+    /// [`Accel::any_hit_between`] answers, and also says which triangle.
+    #[must_use]
+    #[inline]
+    pub fn any_hit_triangle(
+        &self,
+        ray: &Ray<I::Real>,
+        t_min: I::Real,
+        t_max: I::Real,
+    ) -> Option<u32> {
+        let ray_data = self.intersector.prepare_ray(ray);
+        let order = self.bvh.order();
+        let mut found = None;
+        self.bvh.any(ray, t_max, |slots| {
+            let first = slots.start;
+            let k = self.prims[slots].iter().position(|p| {
+                self.intersector.intersect(p, ray, &ray_data, t_max).is_some_and(|h| h.t >= t_min)
+            });
+            found = k.map(|k| order[first + k]);
+            found.is_some()
+        });
+        found
     }
 
     /// Reference for [`Accel::closest_hit`]: tests every triangle, no BVH. The result does not

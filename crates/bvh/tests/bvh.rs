@@ -79,9 +79,19 @@ impl<T: Real> Intersector for Mt<T> {
 /// The oracle: every triangle of the original slice, in order, nearest kept, ties to the
 /// lower index. Independent of the Accel's storage.
 fn reference<T: Real>(tris: &[Triangle<T>], ray: &Ray<T>) -> Option<Hit<T>> {
+    reference_between(tris, ray, T::ZERO, T::INFINITY)
+}
+
+/// The oracle of the segment `t_min <= t <= t_max`.
+fn reference_between<T: Real>(
+    tris: &[Triangle<T>],
+    ray: &Ray<T>,
+    t_min: T,
+    t_max: T,
+) -> Option<Hit<T>> {
     let mut best: Option<Hit<T>> = None;
     for (i, tri) in tris.iter().enumerate() {
-        if let Some(h) = moller_trumbore(tri, ray, T::INFINITY) {
+        if let Some(h) = moller_trumbore(tri, ray, t_max).filter(|h| h.t >= t_min) {
             let hit = Hit::new(i as u32, h);
             if best.is_none_or(|b| hit.t < b.t) {
                 best = Some(hit);
@@ -111,6 +121,32 @@ fn check_ray<T: Real>(accel: &Accel<Mt<T>>, tris: &[Triangle<T>], ray: &Ray<T>) 
         assert_eq!(accel.closest_hit_within(ray, below), None);
         let beyond = h.t * T::from_f64(1.5);
         assert_eq!(accel.closest_hit_within(ray, beyond), Some(h));
+        // Segments: from the hit on includes it; from just past it, the next hit (the first
+        // of a ray that goes on through the mesh), as the oracle finds it.
+        assert_eq!(accel.closest_hit_between(ray, h.t, inf), Some(h), "{ray:?}");
+        assert!(accel.any_hit_between(ray, h.t, inf));
+        let past = h.t * T::from_f64(1.0001);
+        let next = reference_between(tris, ray, past, inf);
+        assert_eq!(accel.closest_hit_between(ray, past, inf), next, "{ray:?}");
+        assert_eq!(accel.any_hit_between(ray, past, inf), next.is_some(), "{ray:?}");
+        // The triangle any-hit names is one the ray hits within the segment.
+        let found = accel.any_hit_triangle(ray, past, inf);
+        assert_eq!(found.is_some(), next.is_some(), "{ray:?}");
+        if let Some(i) = found {
+            let h = moller_trumbore(&tris[i as usize], ray, inf).expect("a hit triangle");
+            assert!(h.t >= past, "{ray:?}");
+        }
+        assert!(accel.any_hit_triangle(ray, T::ZERO, inf).is_some());
+        if let Some(n) = next {
+            // A segment that ends before the next hit holds nothing.
+            let short = past + (n.t - past) * T::from_f64(0.5);
+            assert_eq!(accel.closest_hit_between(ray, past, short), None);
+            assert!(!accel.any_hit_between(ray, past, short));
+        }
+        // An empty or NaN segment holds nothing; t_min <= 0 is the plain query.
+        assert_eq!(accel.closest_hit_between(ray, beyond, h.t), None);
+        assert!(!accel.any_hit_between(ray, T::from_f64(f64::NAN), inf));
+        assert_eq!(accel.closest_hit_between(ray, -T::ONE, inf), Some(h));
     }
     expected.is_some()
 }

@@ -383,6 +383,63 @@ fn barycentrics(tri: usize, x: f64, y: f64) -> (f64, f64) {
 }
 
 #[test]
+fn raycast_segments_and_extra_columns() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write(dir.path(), "square.obj", SQUARE);
+    let inf = f64::INFINITY;
+    // Each ray meets the square at t = 2; the last two columns are t_min, t_max.
+    let rays: Vec<[f64; 8]> = vec![
+        [-0.5, 0.5, 0.0, 0.0, 0.0, 2.0, 0.0, 1.5], // ends before the square
+        [-0.5, 0.5, 0.0, 0.0, 0.0, 2.0, 2.0, 2.0], // both ends inclusive
+        [-0.5, 0.5, 0.0, 0.0, 0.0, 2.0, 2.5, inf], // starts past it
+        [-0.5, 0.5, 0.0, 0.0, 0.0, 2.0, f64::NAN, inf],
+        [0.5, -0.25, 0.0, 0.0, 0.0, 2.0, -1.0, inf], // a negative t_min acts as 0
+    ];
+    let rays_path = dir.path().join("segments.npy");
+    let mut bytes = Vec::new();
+    npy::write(&mut bytes, &[rays.len(), 8], rays.iter().flatten().copied()).unwrap();
+    std::fs::write(&rays_path, bytes).unwrap();
+    for precision in ["f32", "f64"] {
+        let hits = dir.path().join(format!("hits-{precision}.npy"));
+        let args: [&dyn AsRef<std::ffi::OsStr>; 7] =
+            [&obj, &rays_path, &hits, &"--with", &"normal,point", &"--precision", &precision];
+        ok(&raycast(&args));
+        let m = npy::read_f64_matrix(&std::fs::read(&hits).unwrap(), 10).unwrap();
+        let row = |r: usize| &m.values[10 * r..10 * r + 10];
+        for r in [0, 2, 3] {
+            assert_eq!((row(r)[0], row(r)[1]), (inf, -1.0), "{precision} ray {r}");
+            assert!(row(r)[2..].iter().all(|x| x.is_nan()), "{precision} ray {r}: {:?}", row(r));
+        }
+        // t, triangle, then the point on the square and the triangles' normal, worked out by
+        // hand: (b - a) x (c - a) = (0, 0, -4) for both triangles of SQUARE.
+        for (r, tri, xy) in [(1, 0.0, [-0.5, 0.5]), (4, 1.0, [0.5, -0.25])] {
+            let got = row(r);
+            assert!((got[0] - 2.0).abs() < 1e-6 && got[1] == tri, "{precision} {got:?}");
+            let point = [xy[0], xy[1], 4.0];
+            assert!((0..3).all(|k| (got[4 + k] - point[k]).abs() < 1e-6), "{got:?}");
+            assert_eq!(&got[7..], &[0.0, 0.0, -1.0], "{precision}");
+        }
+        // Any hit honours the segments too, and names the triangle.
+        let any = dir.path().join(format!("any-{precision}.npy"));
+        let args: [&dyn AsRef<std::ffi::OsStr>; 8] =
+            [&obj, &rays_path, &any, &"--any-hit", &"--with", &"prim", &"--precision", &precision];
+        ok(&raycast(&args));
+        let m = npy::read_f64_matrix(&std::fs::read(&any).unwrap(), 2).unwrap();
+        assert_eq!(m.values, [0.0, -1.0, 1.0, 0.0, 0.0, -1.0, 0.0, -1.0, 1.0, 1.0], "{precision}");
+    }
+    // Extras that do not go with the query, and a shape that is neither.
+    let out = dir.path().join("bad.npy");
+    fails(&raycast(&[&obj, &rays_path, &out, &"--any-hit", &"--with", &"point"]), "--any-hit");
+    fails(&raycast(&[&obj, &rays_path, &out, &"--with", &"prim"]), "--any-hit");
+    let seven = dir.path().join("seven.npy");
+    let mut bytes = Vec::new();
+    npy::write(&mut bytes, &[1, 7], [0.0; 7]).unwrap();
+    std::fs::write(&seven, bytes).unwrap();
+    fails(&raycast(&[&obj, &seven, &out]), "expected (N, 6) or (N, 8)");
+    assert!(!out.exists());
+}
+
+#[test]
 fn raycast_round_trip_f32_and_f64() {
     let dir = tempfile::tempdir().unwrap();
     let obj = write(dir.path(), "square.obj", SQUARE);

@@ -10,7 +10,7 @@ use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use clap::Parser;
-use intersect::{Intersector, Ray, Real};
+use intersect::{Intersector, Ray, Real, Triangle};
 use rayon::prelude::*;
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
@@ -25,24 +25,28 @@ const RAYS_PER_BLOCK: usize = 4096;
 /// Trace your own rays through a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz).
 ///
 /// RAYS is a NumPy .npy array of float32 or float64 (little-endian, C order) with shape
-/// (N, 6): origin x, y, z, direction x, y, z. Directions need not be unit length; t is
-/// measured in units of the direction.
+/// (N, 6): origin x, y, z, direction x, y, z; or (N, 8), adding t_min and t_max: only hits
+/// with t_min <= t <= t_max count (a segment, e.g. a shadow ray). Directions need not be unit
+/// length; t is measured in units of the direction, and a hit always has t > 0.
 ///
 /// HITS is written as float64 with shape (N, 4): t, triangle index, u, v (the hit point is
 /// (1 - u - v) a + u b + v c of the triangle's vertices a, b, c). A miss is
-/// (+inf, -1, NaN, NaN). With --any-hit, HITS has shape (N, 1): 1 where the ray hits any
-/// triangle at t > 0, 0 where it misses. A ray with a NaN or infinite component, or a zero
-/// direction, is a miss. Triangle indices count the file's faces in order, each n-gon fanned
-/// into n - 2 triangles from its first vertex.
+/// (+inf, -1, NaN, NaN). --with point,normal adds the hit point's x, y, z and the triangle's
+/// unit normal (b - a) x (c - a), normalised (NaN on a miss), in that order. With --any-hit,
+/// HITS has shape (N, 1): 1 where the ray hits any triangle, 0 where it misses; --with prim
+/// adds the index of a triangle it hits (the first found, not the nearest; -1 on a miss). A
+/// ray with a NaN or infinite origin or direction component, a zero direction, or a NaN
+/// t_min or t_max, is a miss. Triangle indices count the file's faces in order, each n-gon
+/// fanned into n - 2 triangles from its first vertex.
 #[derive(Parser, Debug)]
 #[command(name = "raycast", version)]
 struct Cli {
     /// The mesh: .obj, .ply, .stl, .gltf, .glb, .obj.gz or .ply.gz.
     input: PathBuf,
-    /// The rays: .npy, float32 or float64, shape (N, 6).
+    /// The rays: .npy, float32 or float64, shape (N, 6), or (N, 8) with t_min, t_max.
     rays: PathBuf,
-    /// Where to write the hits: .npy, float64, shape (N, 4), or (N, 1) with --any-hit
-    /// (replaced if it exists; never the rays or the mesh).
+    /// Where to write the hits: .npy, float64, shape (N, 4), or (N, 1) with --any-hit, plus
+    /// the --with columns (replaced if it exists; never the rays or the mesh).
     hits: PathBuf,
     /// Ray-triangle back end.
     #[arg(long, value_enum, default_value_t = Backend::LaWatertight)]
@@ -53,6 +57,10 @@ struct Cli {
     /// Only ask whether each ray hits something (faster; HITS is (N, 1) of 1 or 0).
     #[arg(long)]
     any_hit: bool,
+    /// Extra columns of HITS, written in the order listed here whatever the order given:
+    /// point, normal (closest hit); prim (--any-hit).
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "COLUMN,...")]
+    with: Vec<Extra>,
     /// Worker threads, at most 4 per core; 0 is one per core [default: one per core].
     #[arg(long, value_name = "N", value_parser = parse_threads, allow_negative_numbers = true)]
     threads: Option<usize>,
@@ -62,6 +70,59 @@ struct Cli {
     /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
+}
+
+/// An optional column group of HITS.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, clap::ValueEnum)]
+enum Extra {
+    /// The hit point x, y, z (from the triangle's vertices in f64 and the hit's u, v).
+    Point,
+    /// The triangle's unit geometric normal x, y, z, in its winding.
+    Normal,
+    /// With --any-hit: the index of a triangle hit.
+    Prim,
+}
+
+/// The columns of HITS, in order.
+#[derive(Clone, Copy, Debug)]
+struct Columns {
+    any_hit: bool,
+    point: bool,
+    normal: bool,
+    prim: bool,
+}
+
+impl Columns {
+    /// The columns `cli` asks for, or a usage error for an extra that does not go with the
+    /// query.
+    fn of(cli: &Cli) -> Result<Self, UsageError> {
+        let has = |e| cli.with.contains(&e);
+        let c = Self {
+            any_hit: cli.any_hit,
+            point: has(Extra::Point),
+            normal: has(Extra::Normal),
+            prim: has(Extra::Prim),
+        };
+        if c.any_hit && (c.point || c.normal) {
+            return Err(UsageError(
+                "--with point and normal need a closest hit: not with --any-hit".into(),
+            ));
+        }
+        if !c.any_hit && c.prim {
+            return Err(UsageError(
+                "--with prim is for --any-hit (the closest hit always has its triangle)".into(),
+            ));
+        }
+        Ok(c)
+    }
+
+    fn count(self) -> usize {
+        if self.any_hit {
+            1 + usize::from(self.prim)
+        } else {
+            4 + 3 * usize::from(self.point) + 3 * usize::from(self.normal)
+        }
+    }
 }
 
 fn main() -> ExitCode {
@@ -79,6 +140,7 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         let e = format!("{hits}: the hits are written as NumPy arrays: use a .npy extension");
         return Err(UsageError(e).into());
     }
+    let columns = Columns::of(cli)?;
     let stats_path = cli.stats.as_deref();
     let inputs =
         [Named { role: "mesh", path: &cli.input }, Named { role: "rays", path: &cli.rays }];
@@ -93,7 +155,8 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let progress = Progress::new(cli.quiet);
     progress.phase(format!("reading {}", cli.rays.display()));
     let bytes = scene::input::read_file(&cli.rays)?;
-    let rays = npy::read_f64_matrix(&bytes, 6).with_context(|| cli.rays.display().to_string())?;
+    let rays =
+        npy::read_f64_matrix_of(&bytes, &[6, 8]).with_context(|| cli.rays.display().to_string())?;
     drop(bytes);
 
     progress.phase(format!("loading {}", cli.input.display()));
@@ -101,14 +164,19 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
 
-    let job =
-        CastJob { mesh: &mesh, rays: &rays.values, any_hit: cli.any_hit, progress: &progress };
+    let job = CastJob {
+        mesh: &mesh,
+        rays: &rays.values,
+        stride: rays.columns,
+        columns,
+        progress: &progress,
+    };
     let (name, hits, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
 
     progress.phase(format!("writing {}", cli.hits.display()));
     let t = Instant::now();
-    let columns = if cli.any_hit { 1 } else { 4 };
-    let hits = hits_file.write(|w| npy::write(w, &[rays.rows, columns], hits.iter().copied()))?;
+    let shape = [rays.rows, columns.count()];
+    let hits = hits_file.write(|w| npy::write(w, &shape, hits.iter().copied()))?;
     let write = t.elapsed();
     let time = Timings { load, build, trace, write, wall: start.elapsed() };
     let n = rays.rows as u64;
@@ -117,7 +185,7 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     if let Some(file) = stats_file {
         let output = OutputRecord {
             path: cli.hits.display().to_string(),
-            shape: Some([rays.rows, columns]),
+            shape: Some(shape),
             ..OutputRecord::default()
         };
         let inputs = [("mesh", cli.input.as_path()), ("rays", cli.rays.as_path())];
@@ -139,9 +207,10 @@ fn has_npy_extension(path: &Path) -> bool {
 /// Builds the acceleration structure and traces the rays with one back end.
 struct CastJob<'a> {
     mesh: &'a Mesh,
-    /// Six values per ray.
+    /// `stride` values per ray: origin, direction, and t_min, t_max when `stride` is 8.
     rays: &'a [f64],
-    any_hit: bool,
+    stride: usize,
+    columns: Columns,
     progress: &'a Progress,
 }
 
@@ -153,36 +222,95 @@ impl Job for CastJob<'_> {
         self.progress.phase("building the BVH");
         let start = Instant::now();
         let accel = Accel::build(intersector, &self.mesh.triangles());
+        // The triangles in f64 for the hit points and normals, only when asked for.
+        let exact: Vec<Triangle<f64>> = if self.columns.point || self.columns.normal {
+            self.mesh.triangles()
+        } else {
+            Vec::new()
+        };
         let build = start.elapsed();
-        self.progress.trace((self.rays.len() / 6) as u64);
+        let (stride, columns) = (self.stride, self.columns);
+        let n = self.rays.len() / stride;
+        self.progress.trace(n as u64);
         let start = Instant::now();
+        let inf = <I::Real as Real>::INFINITY;
+        // The ray and its segment in the kernel's precision, or None for a miss by definition.
         let ray = |r: &[f64]| {
             let ray: Ray<I::Real> = Ray::new([r[0], r[1], r[2]], [r[3], r[4], r[5]]).cast();
+            let (t_min, t_max) = if stride == 8 {
+                (<I::Real as Real>::from_f64(r[6]), <I::Real as Real>::from_f64(r[7]))
+            } else {
+                (<I::Real as Real>::ZERO, inf)
+            };
             // Rounding to f32 can overflow a finite f64 to infinity: check after the cast.
             let finite = ray.origin.iter().chain(&ray.dir).all(|x| x.is_finite());
-            (finite && ray.dir != [<I::Real as Real>::ZERO; 3]).then_some(ray)
+            let segment = !t_min.is_nan() && !t_max.is_nan();
+            (finite && segment && ray.dir != [<I::Real as Real>::ZERO; 3])
+                .then_some((ray, t_min, t_max))
         };
-        let columns = if self.any_hit { 1 } else { 4 };
-        let mut hits = vec![0.0; self.rays.len() / 6 * columns];
+        let width = columns.count();
+        let mut hits = vec![0.0; n * width];
         // In blocks, each writing its own rows of the hits, so that the bar can count them.
-        let blocks = self.rays.par_chunks(6 * RAYS_PER_BLOCK);
-        blocks.zip(hits.par_chunks_mut(columns * RAYS_PER_BLOCK)).for_each(|(rays, out)| {
-            let rays = rays.chunks_exact(6);
-            if self.any_hit {
-                let inf = <I::Real as Real>::INFINITY;
-                for (r, h) in rays.zip(out.iter_mut()) {
-                    *h = ray(r).map_or(0.0, |ray| f64::from(u8::from(accel.any_hit(&ray, inf))));
+        let blocks = self.rays.par_chunks(stride * RAYS_PER_BLOCK);
+        blocks.zip(hits.par_chunks_mut(width * RAYS_PER_BLOCK)).for_each(|(rays, out)| {
+            for (r, h) in rays.chunks_exact(stride).zip(out.chunks_exact_mut(width)) {
+                let ray = ray(r);
+                if columns.any_hit {
+                    let found = match ray {
+                        Some((ray, t_min, t_max)) if columns.prim => {
+                            accel.any_hit_triangle(&ray, t_min, t_max)
+                        }
+                        Some((ray, t_min, t_max)) => {
+                            accel.any_hit_between(&ray, t_min, t_max).then_some(0)
+                        }
+                        None => None,
+                    };
+                    h[0] = f64::from(u8::from(found.is_some()));
+                    if columns.prim {
+                        h[1] = found.map_or(-1.0, f64::from);
+                    }
+                    continue;
                 }
-            } else {
-                for (r, h) in rays.zip(out.chunks_exact_mut(4)) {
-                    h.copy_from_slice(&match ray(r).and_then(|ray| accel.closest_hit(&ray)) {
-                        Some(h) => [h.t.to_f64(), f64::from(h.prim), h.u.to_f64(), h.v.to_f64()],
-                        None => [f64::INFINITY, -1.0, f64::NAN, f64::NAN],
-                    });
+                let hit = ray
+                    .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max));
+                let Some(hit) = hit else {
+                    h.copy_from_slice(&MISS[..width]);
+                    continue;
+                };
+                let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
+                h[..4].copy_from_slice(&[hit.t.to_f64(), f64::from(hit.prim), u, v]);
+                let mut rest = &mut h[4..];
+                let [a, b, c] =
+                    exact.get(hit.prim as usize).map_or([[0.0; 3]; 3], |t| t.vertices());
+                if columns.point {
+                    let w = 1.0 - u - v;
+                    for k in 0..3 {
+                        rest[k] = w * a[k] + u * b[k] + v * c[k];
+                    }
+                    rest = &mut rest[3..];
+                }
+                if columns.normal {
+                    rest[..3].copy_from_slice(&unit_normal(a, b, c));
                 }
             }
-            self.progress.inc((out.len() / columns) as u64);
+            self.progress.inc((out.len() / width) as u64);
         });
         (I::NAME, hits, build, start.elapsed())
     }
+}
+
+/// A miss's row, as long as the longest row: `+inf, -1`, then NaN.
+const MISS: [f64; 10] = {
+    let mut row = [f64::NAN; 10];
+    row[0] = f64::INFINITY;
+    row[1] = -1.0;
+    row
+};
+
+/// `(b - a) x (c - a)`, normalised (NaN for a degenerate triangle, which no ray hits).
+fn unit_normal(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
+    let (e1, e2) = (intersect::vec3::sub(b, a), intersect::vec3::sub(c, a));
+    let n = intersect::vec3::cross(e1, e2);
+    let len = intersect::vec3::dot(n, n).sqrt();
+    n.map(|x| x / len)
 }

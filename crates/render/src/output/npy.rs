@@ -115,13 +115,13 @@ pub enum NpyError {
     /// The array is stored in Fortran (column-major) order.
     #[error("the array is in Fortran order: expected C order")]
     FortranOrder,
-    /// The array's shape is not `(N, columns)`.
-    #[error("array shape {found}: expected (N, {columns})")]
+    /// The array's shape is not `(N, columns)` for an accepted number of columns.
+    #[error("array shape {found}: expected {expected}")]
     Shape {
         /// The shape found, as written in the header (escaped and cut short).
         found: String,
-        /// The expected number of columns.
-        columns: usize,
+        /// The accepted shapes, e.g. `(N, 6)` or `(N, 6) or (N, 8)`.
+        expected: String,
     },
     /// The data is shorter or longer than the shape says.
     #[error("the array data is {found} bytes, but shape and dtype call for {expected}")]
@@ -153,6 +153,16 @@ pub struct Matrix {
 /// [`NpyError`] naming what is wrong: not `.npy`, another dtype (integers, big-endian,
 /// ...), Fortran order, another shape, or data shorter or longer than the shape.
 pub fn read_f64_matrix(bytes: &[u8], columns: usize) -> Result<Matrix, NpyError> {
+    read_f64_matrix_of(bytes, &[columns])
+}
+
+/// Reads an `(N, c)` array as [`read_f64_matrix`] does, for any `c` of `columns` (the
+/// matrix's `columns` says which).
+///
+/// # Errors
+///
+/// As [`read_f64_matrix`]; a shape error names every accepted shape.
+pub fn read_f64_matrix_of(bytes: &[u8], columns: &[usize]) -> Result<Matrix, NpyError> {
     if bytes.len() < 8 || &bytes[..6] != MAGIC {
         return Err(NpyError::NotNpy);
     }
@@ -180,9 +190,12 @@ pub fn read_f64_matrix(bytes: &[u8], columns: usize) -> Result<Matrix, NpyError>
     if fields.fortran_order {
         return Err(NpyError::FortranOrder);
     }
-    let shape_error = || NpyError::Shape { found: fields.shape_text.clone(), columns };
+    let shape_error = || {
+        let shapes: Vec<String> = columns.iter().map(|c| format!("(N, {c})")).collect();
+        NpyError::Shape { found: fields.shape_text.clone(), expected: shapes.join(" or ") }
+    };
     let [rows, cols] = fields.shape[..] else { return Err(shape_error()) };
-    if cols != columns {
+    if !columns.contains(&cols) {
         return Err(shape_error());
     }
     let data = &bytes[end..];
@@ -371,7 +384,7 @@ mod tests {
         );
         assert_eq!(
             read_f64_matrix(&good, 6),
-            Err(NpyError::Shape { found: "(2, 3)".into(), columns: 6 })
+            Err(NpyError::Shape { found: "(2, 3)".into(), expected: "(N, 6)".into() })
         );
         let swap = |from: &str, to: &str| {
             assert_eq!(from.len(), to.len());
