@@ -10,7 +10,7 @@ pub mod progress;
 pub mod record;
 pub mod signals;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Duration;
 
@@ -72,6 +72,94 @@ pub struct Stats {
     /// The run record (with `--stats`): program, commit, command, inputs, output, machine.
     #[serde(flatten)]
     pub record: Option<Record>,
+    /// With `--compare`: the comparison's figures (absent otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compare: Option<CompareStats>,
+}
+
+/// The `compare` object of the `--stats` JSON (the keys are the field names).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct CompareStats {
+    /// Each back end's own figures, in the order asked for.
+    pub backends: Vec<BackendTimes>,
+    /// Pixels on which some two back ends disagree (hit against miss, or triangles).
+    pub disagreeing_pixels: usize,
+    /// One entry per pair, as in the table.
+    pub pairs: Vec<PairEntry>,
+}
+
+/// One back end's times in a comparison.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct BackendTimes {
+    /// The back end's name.
+    pub name: String,
+    /// Time to build its BVH.
+    pub build_ms: f64,
+    /// Time to trace its rays (for the first, the image's render and the hits).
+    pub trace_ms: f64,
+}
+
+/// A pair's figures and the diff image written for it.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct PairEntry {
+    /// The figures.
+    #[serde(flatten)]
+    pub stats: render::compare::PairStats,
+    /// The diff image's path, as written.
+    pub diff_image: String,
+}
+
+impl CompareStats {
+    /// The figures of `comparison`, with each back end's `(build, trace)` times and each
+    /// pair's diff image path (in the order of `comparison.pairs`).
+    #[must_use]
+    pub fn new(
+        comparison: &render::compare::Comparison,
+        times: &[(Duration, Duration)],
+        diff_images: &[PathBuf],
+    ) -> Self {
+        let backends = comparison
+            .backends
+            .iter()
+            .zip(times)
+            .map(|(name, &(build, trace))| BackendTimes {
+                name: name.clone(),
+                build_ms: ms(build),
+                trace_ms: ms(trace),
+            })
+            .collect();
+        let pairs = comparison
+            .pairs
+            .iter()
+            .zip(diff_images)
+            .map(|(p, path)| PairEntry { stats: p.clone(), diff_image: path.display().to_string() })
+            .collect();
+        Self { backends, disagreeing_pixels: comparison.disagreements.len(), pairs }
+    }
+}
+
+/// The longest file name written (most file systems' limit, in bytes).
+pub const MAX_NAME_BYTES: usize = 255;
+
+/// The diff image of back ends `a` and `b` for the image `output`: beside it, named
+/// `STEM.diff.A.B.png` (`out.png` gives `out.diff.la.ga.png`), whatever `output`'s format.
+///
+/// # Errors
+///
+/// [`UsageError`] when the name would be longer than [`MAX_NAME_BYTES`] (found before the
+/// work rather than when the finished file is renamed into place).
+pub fn diff_path(output: &Path, a: &str, b: &str) -> anyhow::Result<PathBuf> {
+    let mut name = output.file_stem().unwrap_or_default().to_os_string();
+    name.push(format!(".diff.{a}.{b}.png"));
+    if name.len() > MAX_NAME_BYTES {
+        return Err(UsageError(format!(
+            "{}: the name of the diff image for {a} and {b} would be longer than \
+             {MAX_NAME_BYTES} bytes: choose a shorter output name",
+            output.display()
+        ))
+        .into());
+    }
+    Ok(output.with_file_name(name))
 }
 
 impl Stats {
@@ -101,6 +189,7 @@ impl Stats {
             threads,
             camera: None,
             record: None,
+            compare: None,
         }
     }
 

@@ -65,7 +65,13 @@ impl Progress {
 
     /// Switches to a bar over `total` units of tracing work (pixels, rays).
     pub fn trace(&self, total: u64) {
-        let style = ProgressStyle::with_template("tracing {bar:40} {percent:>3}% {elapsed}{eta}")
+        self.trace_labelled("tracing", total);
+    }
+
+    /// Switches to a bar over `total` units of tracing work, headed `label` instead of
+    /// `tracing` (`--compare` names the back end: `tracing la-mt (2/5)`).
+    pub fn trace_labelled(&self, label: impl Into<Cow<'static, str>>, total: u64) {
+        let style = ProgressStyle::with_template("{msg} {bar:40} {percent:>3}% {elapsed}{eta}")
             .expect("the template is valid")
             .with_key("eta", |s: &ProgressState, w: &mut dyn std::fmt::Write| {
                 if let Some(left) = eta(s.elapsed(), f64::from(s.fraction())) {
@@ -74,6 +80,7 @@ impl Progress {
             });
         self.bar.set_style(style);
         self.bar.reset();
+        self.bar.set_message(label);
         self.bar.set_length(total);
     }
 

@@ -285,7 +285,7 @@ impl Frame {
 }
 
 /// `width * height`, checked against the limits.
-fn pixel_count(width: u32, height: u32) -> Result<usize, FrameError> {
+pub(crate) fn pixel_count(width: u32, height: u32) -> Result<usize, FrameError> {
     if width == 0 || height == 0 {
         return Err(FrameError::Empty { width, height });
     }
@@ -297,7 +297,12 @@ fn pixel_count(width: u32, height: u32) -> Result<usize, FrameError> {
 }
 
 /// An empty vector with room for `n` values, or an error instead of an abort.
-fn reserve<T>(n: usize, width: u32, height: u32, what: &'static str) -> Result<Vec<T>, FrameError> {
+pub(crate) fn reserve<T>(
+    n: usize,
+    width: u32,
+    height: u32,
+    what: &'static str,
+) -> Result<Vec<T>, FrameError> {
     let mut v = Vec::new();
     v.try_reserve_exact(n).map_err(|_| FrameError::OutOfMemory {
         width,
@@ -308,7 +313,7 @@ fn reserve<T>(n: usize, width: u32, height: u32, what: &'static str) -> Result<V
     Ok(v)
 }
 
-fn filled<T: Clone>(
+pub(crate) fn filled<T: Clone>(
     n: usize,
     value: T,
     width: u32,

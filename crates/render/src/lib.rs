@@ -7,10 +7,12 @@
 //! - [`frame`]: per-pixel results of a render.
 //! - [`trace`]: the render loop, [`trace::render_frame`].
 //! - [`output`]: image and data writers.
+//! - [`compare`]: several back ends' renders of the same rays, compared pixel by pixel.
 
 #![deny(missing_docs)]
 
 pub mod camera;
+pub mod compare;
 pub mod frame;
 pub mod output;
 pub mod trace;

@@ -283,6 +283,19 @@ impl AtomicFile {
         commit_all([self.write(write)?])
     }
 
+    /// Encodes `image` as PNG into the file, for [`commit_all`] (diff images and other
+    /// pictures that are not a [`Frame`]).
+    ///
+    /// # Errors
+    ///
+    /// [`OutputError::Encode`] or [`OutputError::Write`]; the temporary file is removed.
+    pub fn write_png(self, image: &image::RgbImage) -> Result<Written, OutputError> {
+        self.write_with(
+            |w| image.write_to(w, ImageFormat::Png),
+            |path, error| OutputError::Encode { path, error },
+        )
+    }
+
     /// Like [`AtomicFile::write`] for writers whose error is not an [`io::Error`].
     fn write_with<E>(
         self,

@@ -105,7 +105,7 @@ pub fn render_frame<I: Intersector>(
 
 /// Computes every pixel of a `w x h` row-major buffer with `pixel(i, j)`, in parallel bands
 /// of tiles, reporting finished pixels to `progress`.
-fn fill<P: Send>(
+pub(crate) fn fill<P: Send>(
     px: &mut [P],
     w: u32,
     h: u32,

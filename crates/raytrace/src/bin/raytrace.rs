@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::{Instant, SystemTime};
+use std::time::{Duration, Instant, SystemTime};
 
 use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
@@ -14,10 +14,11 @@ use intersect::Intersector;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::record::{CameraRecord, OutputRecord, Record};
-use raytrace::{Named, Stats, Timings, UsageError};
+use raytrace::{CompareStats, Named, Stats, Timings, UsageError};
 use render::camera::{Camera, DEFAULT_FOV_DEG};
-use render::frame::{Frame, MAX_SIDE, Mode};
-use render::output::{Format, ImageOutput};
+use render::compare::Hits;
+use render::frame::{Frame, FrameError, MAX_SIDE, Mode};
+use render::output::{AtomicFile, Format, ImageOutput};
 use scene::Mesh;
 
 /// Render a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz) to an image, one ray per
@@ -90,6 +91,22 @@ struct Cli {
     /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
+    /// Render the same rays with each listed back end (comma-separated, each once; alone:
+    /// every back end) and compare them pixel by pixel: a table per pair on stdout, a diff
+    /// image per pair beside OUTPUT named STEM.diff.A.B.png (black: equal, red: only A hits,
+    /// green: only B hits, yellow: different triangles, blue: same triangle, different
+    /// distance, brighter for more), and a "compare" object in --stats. OUTPUT holds the first
+    /// listed back end's image. Put it after the four arguments, or write --compare=LIST.
+    #[arg(
+        long,
+        value_enum,
+        value_name = "BACKENDS",
+        num_args = 0..=1,
+        value_delimiter = ',',
+        conflicts_with = "backend",
+        hide_possible_values = true
+    )]
+    compare: Option<Vec<Backend>>,
 }
 
 /// The parser for a side of the image: 1 to [`MAX_SIDE`] pixels.
@@ -138,11 +155,20 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     // output files are created (empty, temporary) before the work, so that a bad path fails
     // in a moment rather than after the render.
     Format::from_path(&cli.output).map_err(|e| UsageError(e.to_string()))?;
+    let backends = backends_to_run(cli)?;
+    let pairs = pairs(&backends);
+    let diff_paths = pairs
+        .iter()
+        .map(|&(a, b)| raytrace::diff_path(&cli.output, a.name(), b.name()))
+        .collect::<anyhow::Result<Vec<_>>>()?;
     let stats_path = cli.stats.as_deref();
     let mut outputs = vec![Named { role: "image", path: &cli.output }];
+    outputs.extend(diff_paths.iter().map(|path| Named { role: "diff image", path }));
     outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
     raytrace::start_run(&[Named { role: "mesh", path: &cli.input }], &outputs, stats_path)?;
     let output = ImageOutput::create(&cli.output)?;
+    let diff_files =
+        diff_paths.iter().map(|p| AtomicFile::create(p)).collect::<Result<Vec<_>, _>>()?;
     let stats_file = raytrace::create_stats_file(stats_path)?;
     let mut frame = Frame::new(cli.mode.into(), cli.width, cli.height)?;
     let threads = resolve_threads(cli.threads);
@@ -155,18 +181,56 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let load = t.elapsed();
     let (camera, placed) = camera(cli, &mesh)?;
 
-    let job = RenderJob { mesh: &mesh, camera: &camera, frame: &mut frame, progress: &progress };
-    let (name, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
+    let comparing = cli.compare.is_some();
+    let mut runs = Vec::with_capacity(backends.len());
+    for (k, &backend) in backends.iter().enumerate() {
+        let label = if comparing {
+            format!(" {} ({}/{})", backend.name(), k + 1, backends.len())
+        } else {
+            String::new()
+        };
+        let job = RenderJob {
+            mesh: &mesh,
+            camera: &camera,
+            // The image is the first back end's; the others only trace the hits.
+            frame: (k == 0).then_some(&mut frame),
+            size: (cli.width, cli.height),
+            hits: comparing,
+            progress: &progress,
+            label,
+        };
+        runs.push(pool.install(|| dispatch(backend, cli.precision, job))?);
+    }
 
     progress.phase(format!("writing {}", cli.output.display()));
     let t = Instant::now();
-    let image = output.encode(&frame)?;
+    let mut written = vec![output.encode(&frame)?];
+    let comparison = if comparing {
+        let named: Vec<(&str, &Hits)> = runs
+            .iter()
+            .map(|r| (r.name, r.hits.as_ref().expect("compared runs trace hits")))
+            .collect();
+        let comparison = render::compare::compare(&named, &camera);
+        for (file, &(a, b)) in diff_files.into_iter().zip(&pairs) {
+            let (a, b) = (named[index(&backends, a)].1, named[index(&backends, b)].1);
+            written.push(file.write_png(&render::compare::diff_image(a, b)?)?);
+        }
+        Some(comparison)
+    } else {
+        None
+    };
     let write = t.elapsed();
-    let rays = u64::from(cli.width) * u64::from(cli.height);
+    let traces = u64::try_from(runs.len()).unwrap_or(u64::MAX) + u64::from(comparing);
+    let rays = u64::from(cli.width) * u64::from(cli.height) * traces;
+    let build = runs.iter().map(|r| r.build).sum();
+    let trace = runs.iter().map(|r| r.trace).sum();
     let time = Timings { load, build, trace, write, wall: start.elapsed() };
-    let mut stats = Stats::new(mesh.len(), rays, time, name, cli.precision, threads);
+    let mut stats = Stats::new(mesh.len(), rays, time, runs[0].name, cli.precision, threads);
     stats.camera = Some(placed);
-    let mut written = vec![image];
+    if let Some(comparison) = &comparison {
+        let times: Vec<_> = runs.iter().map(|r| (r.build, r.trace)).collect();
+        stats.compare = Some(CompareStats::new(comparison, &times, &diff_paths));
+    }
     if let Some(file) = stats_file {
         let output = OutputRecord {
             path: cli.output.display().to_string(),
@@ -182,9 +246,63 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     render::output::commit_all(written)?;
     progress.finish();
     if !cli.quiet {
+        if let Some(comparison) = &comparison {
+            println!(
+                "compare: {} back ends, {} of {} pixels where some disagree; diff images {}",
+                comparison.backends.len(),
+                comparison.disagreements.len(),
+                u64::from(cli.width) * u64::from(cli.height),
+                raytrace::diff_path(&cli.output, "A", "B")?.display()
+            );
+            print!("{}", render::compare::table(comparison));
+        }
         println!("{}: {} -> {}", cli.input.display(), stats.summary(), cli.output.display());
     }
     Ok(())
+}
+
+/// The back ends to render with: `--backend`'s, or `--compare`'s list (every back end when
+/// it is empty).
+///
+/// # Errors
+///
+/// [`UsageError`] for a back end listed twice or a list of one.
+fn backends_to_run(cli: &Cli) -> anyhow::Result<Vec<Backend>> {
+    let Some(list) = &cli.compare else { return Ok(vec![cli.backend]) };
+    if list.is_empty() {
+        return Ok(Backend::ALL.to_vec());
+    }
+    for (k, b) in list.iter().enumerate() {
+        if list[..k].contains(b) {
+            return Err(UsageError(format!(
+                "--compare: {} is listed twice (each back end once)",
+                b.name()
+            ))
+            .into());
+        }
+    }
+    if list.len() < 2 {
+        return Err(UsageError(format!(
+            "--compare: {} alone has nothing to be compared with: list two or more back ends",
+            list[0].name()
+        ))
+        .into());
+    }
+    Ok(list.clone())
+}
+
+/// Every pair `(a, b)` of `backends` with `a` listed before `b`, in the order of
+/// [`render::compare::Comparison::pairs`].
+fn pairs(backends: &[Backend]) -> Vec<(Backend, Backend)> {
+    let mut v = Vec::new();
+    for (k, &a) in backends.iter().enumerate() {
+        v.extend(backends[k + 1..].iter().map(|&b| (a, b)));
+    }
+    v
+}
+
+fn index(backends: &[Backend], b: Backend) -> usize {
+    backends.iter().position(|&x| x == b).expect("pairs are made of the listed back ends")
 }
 
 /// The camera from `--camera`, then `--eye`, `--look-at`, `--up` and `--fov` on top, and the
@@ -207,28 +325,50 @@ fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<(Camera, CameraRecord)> {
     Ok((camera, placed))
 }
 
-/// Builds the acceleration structure and renders: the part compiled once per back end.
+/// Builds the acceleration structure and renders the image and/or traces the hits for
+/// `--compare`: the part compiled once per back end.
 struct RenderJob<'a> {
     mesh: &'a Mesh,
     camera: &'a Camera,
-    frame: &'a mut Frame,
+    frame: Option<&'a mut Frame>,
+    size: (u32, u32),
+    hits: bool,
     progress: &'a Progress,
+    /// Appended to the progress lines (` la-mt (2/5)`), empty for a single back end.
+    label: String,
+}
+
+/// What one back end's [`RenderJob`] gives.
+struct Run {
+    name: &'static str,
+    build: Duration,
+    trace: Duration,
+    hits: Option<Hits>,
 }
 
 impl Job for RenderJob<'_> {
-    /// The back end's name, build time, trace time.
-    type Output = (&'static str, std::time::Duration, std::time::Duration);
+    type Output = Result<Run, FrameError>;
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
-        self.progress.phase("building the BVH");
+        let label = &self.label;
+        self.progress.phase(format!("building the BVH{label}"));
         let start = Instant::now();
         let accel = Accel::build(intersector, &self.mesh.triangles());
         let build = start.elapsed();
-        self.progress.trace(u64::from(self.frame.width()) * u64::from(self.frame.height()));
+        let (w, h) = self.size;
+        let traces = u64::from(self.frame.is_some()) + u64::from(self.hits);
+        self.progress
+            .trace_labelled(format!("tracing{label}"), u64::from(w) * u64::from(h) * traces);
+        let inc = |n: usize| self.progress.inc(n as u64);
         let start = Instant::now();
-        render::trace::render_frame(&accel, self.mesh, self.camera, self.frame, &|n| {
-            self.progress.inc(n as u64);
-        });
-        (I::NAME, build, start.elapsed())
+        if let Some(frame) = self.frame {
+            render::trace::render_frame(&accel, self.mesh, self.camera, frame, &inc);
+        }
+        let hits = if self.hits {
+            Some(render::compare::trace_hits(&accel, self.camera, w, h, &inc)?)
+        } else {
+            None
+        };
+        Ok(Run { name: I::NAME, build, trace: start.elapsed(), hits })
     }
 }
