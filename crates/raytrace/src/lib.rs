@@ -7,6 +7,7 @@
 pub mod args;
 pub mod paths;
 pub mod progress;
+pub mod see;
 pub mod signals;
 
 use std::path::Path;

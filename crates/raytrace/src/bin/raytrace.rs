@@ -11,6 +11,7 @@ use backends::{Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use clap::{Parser, ValueEnum};
 use intersect::Intersector;
+use intersect::Real as _;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::{Named, Stats, Timings, UsageError};
@@ -89,6 +90,8 @@ struct Cli {
     /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
+    #[command(flatten)]
+    see: raytrace::see::SeeArgs,
 }
 
 /// The parser for a side of the image: 1 to [`MAX_SIDE`] pixels.
@@ -140,9 +143,11 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let stats_path = cli.stats.as_deref();
     let mut outputs = vec![Named { role: "image", path: &cli.output }];
     outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
+    cli.see.outputs(&mut outputs)?;
     raytrace::start_run(&[Named { role: "mesh", path: &cli.input }], &outputs, stats_path)?;
     let output = ImageOutput::create(&cli.output)?;
     let stats_file = raytrace::create_stats_file(stats_path)?;
+    let see_files = cli.see.create()?;
     let mut frame = Frame::new(cli.mode.into(), cli.width, cli.height)?;
     let threads = resolve_threads(cli.threads);
     let pool = raytrace::thread_pool(threads)?;
@@ -154,8 +159,19 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     let load = t.elapsed();
     let camera = camera(cli, &mesh)?;
 
-    let job = RenderJob { mesh: &mesh, camera: &camera, frame: &mut frame, progress: &progress };
-    let (name, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
+    let samples = if cli.see.wanted() {
+        view::sample_pixels(cli.width, cli.height, cli.see.view_rays)
+    } else {
+        Vec::new()
+    };
+    let job = RenderJob {
+        mesh: &mesh,
+        camera: &camera,
+        frame: &mut frame,
+        progress: &progress,
+        samples: &samples,
+    };
+    let (name, build, trace, sample_t) = pool.install(|| dispatch(cli.backend, cli.precision, job));
 
     progress.phase(format!("writing {}", cli.output.display()));
     let t = Instant::now();
@@ -168,6 +184,32 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
     if let Some(file) = stats_file {
         written.push(stats.write_json(file)?);
     }
+    if cli.see.wanted() {
+        progress.phase("writing the viewer and scene");
+        let (w, h) = (cli.width, cli.height);
+        let rays = samples
+            .iter()
+            .zip(&sample_t)
+            .map(|(&(i, j), &t)| (camera.eye(), camera.direction(i, j, w, h), t));
+        let look_at = look_at(cli, &mesh);
+        let extra = [(
+            "mode",
+            cli.mode.to_possible_value().map_or_else(String::new, |v| v.get_name().to_owned()),
+        )];
+        let run = view::Run {
+            mesh: &mesh,
+            camera: Some(view::RunCamera {
+                camera,
+                look_at,
+                width: w,
+                height: h,
+                png: view::png_of(&frame).context("--view: the image")?,
+            }),
+            layers: view::hit_and_miss_layers(&mesh, rays),
+            figures: raytrace::see::figures(&stats, &extra),
+        };
+        written.extend(see_files.write(&run)?);
+    }
     render::output::commit_all(written)?;
     progress.finish();
     if !cli.quiet {
@@ -179,18 +221,24 @@ fn run(cli: &Cli, start: Instant) -> anyhow::Result<()> {
 /// The camera from `--camera`, then `--eye`, `--look-at`, `--up` and `--fov` on top.
 fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<Camera> {
     let aspect = f64::from(cli.width) / f64::from(cli.height);
-    let base = match cli.camera {
+    let base_eye = match cli.camera {
         CameraArg::Auto => {
             let (center, radius) = mesh.bounding_sphere();
-            let auto = Camera::auto(center, radius, cli.fov, aspect).context("--camera auto")?;
-            (auto.eye(), center)
+            Camera::auto(center, radius, cli.fov, aspect).context("--camera auto")?.eye()
         }
-        CameraArg::Origin => ([0.0; 3], [0.0, 0.0, 1.0]),
+        CameraArg::Origin => [0.0; 3],
     };
-    let eye = cli.eye.unwrap_or(base.0);
-    let look_at = cli.look_at.unwrap_or(base.1);
+    let eye = cli.eye.unwrap_or(base_eye);
     let up = cli.up.unwrap_or([0.0, 1.0, 0.0]);
-    Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")
+    Camera::look_at(eye, look_at(cli, mesh), up, cli.fov).context("bad camera")
+}
+
+/// The point looked at: `--look-at`, else the `--camera` placement's.
+fn look_at(cli: &Cli, mesh: &Mesh) -> [f64; 3] {
+    cli.look_at.unwrap_or_else(|| match cli.camera {
+        CameraArg::Auto => mesh.bounding_sphere().0,
+        CameraArg::Origin => [0.0, 0.0, 1.0],
+    })
 }
 
 /// Builds the acceleration structure and renders: the part compiled once per back end.
@@ -199,11 +247,14 @@ struct RenderJob<'a> {
     camera: &'a Camera,
     frame: &'a mut Frame,
     progress: &'a Progress,
+    /// Pixels to trace again for `--view` and `--scene`, with the same camera and back end:
+    /// the frame keeps no hit distance in every mode (alpha asks only "any hit?").
+    samples: &'a [(u32, u32)],
 }
 
 impl Job for RenderJob<'_> {
-    /// The back end's name, build time, trace time.
-    type Output = (&'static str, std::time::Duration, std::time::Duration);
+    /// The back end's name, build time, trace time, the samples' hit distances.
+    type Output = (&'static str, std::time::Duration, std::time::Duration, Vec<Option<f64>>);
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
         self.progress.phase("building the BVH");
@@ -215,6 +266,16 @@ impl Job for RenderJob<'_> {
         render::trace::render_frame(&accel, self.mesh, self.camera, self.frame, &|n| {
             self.progress.inc(n as u64);
         });
-        (I::NAME, build, start.elapsed())
+        let trace = start.elapsed();
+        let (w, h) = (self.frame.width(), self.frame.height());
+        let t = self
+            .samples
+            .iter()
+            .map(|&(i, j)| {
+                let ray = self.camera.ray::<I::Real>(i, j, w, h);
+                accel.closest_hit(&ray).map(|hit| hit.t.to_f64())
+            })
+            .collect();
+        (I::NAME, build, trace, t)
     }
 }
