@@ -8,6 +8,7 @@ pub mod args;
 pub mod paths;
 pub mod progress;
 pub mod record;
+pub mod see;
 pub mod signals;
 
 use std::path::{Path, PathBuf};

@@ -70,6 +70,8 @@ struct Cli {
     /// Also write the summary's figures to this JSON file (replaces only an earlier one).
     #[arg(long, value_name = "FILE.json")]
     stats: Option<PathBuf>,
+    #[command(flatten)]
+    see: raytrace::see::SeeArgs,
 }
 
 /// An optional column group of HITS.
@@ -146,9 +148,11 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         [Named { role: "mesh", path: &cli.input }, Named { role: "rays", path: &cli.rays }];
     let mut outputs = vec![Named { role: "hits", path: &cli.hits }];
     outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
+    cli.see.outputs(&mut outputs)?;
     raytrace::start_run(&inputs, &outputs, stats_path)?;
     let hits_file = AtomicFile::create(&cli.hits)?;
     let stats_file = raytrace::create_stats_file(stats_path)?;
+    let see_files = cli.see.create()?;
     let threads = resolve_threads(cli.threads);
     let pool = raytrace::thread_pool(threads)?;
 
@@ -164,14 +168,21 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
 
+    let samples = if cli.see.wanted() {
+        view::sample_indices(rays.rows, cli.see.view_rays)
+    } else {
+        Vec::new()
+    };
     let job = CastJob {
         mesh: &mesh,
         rays: &rays.values,
         stride: rays.columns,
         columns,
         progress: &progress,
+        samples: &samples,
     };
-    let (name, hits, build, trace) = pool.install(|| dispatch(cli.backend, cli.precision, job));
+    let (name, hits, build, trace, sample_t) =
+        pool.install(|| dispatch(cli.backend, cli.precision, job));
 
     progress.phase(format!("writing {}", cli.hits.display()));
     let t = Instant::now();
@@ -191,6 +202,24 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         let inputs = [("mesh", cli.input.as_path()), ("rays", cli.rays.as_path())];
         stats.record = Some(Record::new("raycast", started, &inputs, output)?);
         written.push(stats.write_json(file)?);
+    }
+    if cli.see.wanted() {
+        progress.phase("writing the viewer and scene");
+        // Unit directions and distances along them (raycast's t is in units of the direction).
+        let traced = samples.iter().zip(&sample_t).filter_map(|(&k, &t)| {
+            let r = &rays.values[rays.columns * k..rays.columns * k + 6];
+            let len = (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]).sqrt();
+            let finite = r.iter().all(|x| x.is_finite()) && len > 0.0 && len.is_finite();
+            let dir = [r[3] / len, r[4] / len, r[5] / len];
+            finite.then_some(([r[0], r[1], r[2]], dir, t.map(|t| t * len)))
+        });
+        let run = view::Run {
+            mesh: &mesh,
+            camera: None,
+            layers: view::hit_and_miss_layers(&mesh, traced),
+            figures: raytrace::see::figures(&stats, &[]),
+        };
+        written.extend(see_files.write(&run)?);
     }
     render::output::commit_all(written)?;
     progress.finish();
@@ -212,11 +241,15 @@ struct CastJob<'a> {
     stride: usize,
     columns: Columns,
     progress: &'a Progress,
+    /// Rays to show with `--view` and `--scene`, traced again for their nearest hit (with
+    /// `--any-hit` the hits hold no distance).
+    samples: &'a [usize],
 }
 
 impl Job for CastJob<'_> {
-    /// The back end's name, the HITS values in row order, build time, trace time.
-    type Output = (&'static str, Vec<f64>, Duration, Duration);
+    /// The back end's name, the HITS values in row order, build time, trace time, the
+    /// samples' hit distances.
+    type Output = (&'static str, Vec<f64>, Duration, Duration, Vec<Option<f64>>);
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
         self.progress.phase("building the BVH");
@@ -295,7 +328,17 @@ impl Job for CastJob<'_> {
             }
             self.progress.inc((out.len() / width) as u64);
         });
-        (I::NAME, hits, build, start.elapsed())
+        let trace = start.elapsed();
+        let t = self
+            .samples
+            .iter()
+            .map(|&k| {
+                ray(&self.rays[stride * k..stride * (k + 1)])
+                    .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max))
+                    .map(|hit| hit.t.to_f64())
+            })
+            .collect();
+        (I::NAME, hits, build, trace, t)
     }
 }
 

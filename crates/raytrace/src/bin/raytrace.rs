@@ -11,6 +11,7 @@ use backends::{Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use clap::{Parser, ValueEnum};
 use intersect::Intersector;
+use intersect::Real as _;
 use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::record::{CameraRecord, OutputRecord, Record};
@@ -107,6 +108,8 @@ struct Cli {
         hide_possible_values = true
     )]
     compare: Option<Vec<Backend>>,
+    #[command(flatten)]
+    see: raytrace::see::SeeArgs,
 }
 
 /// The parser for a side of the image: 1 to [`MAX_SIDE`] pixels.
@@ -165,11 +168,13 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let mut outputs = vec![Named { role: "image", path: &cli.output }];
     outputs.extend(diff_paths.iter().map(|path| Named { role: "diff image", path }));
     outputs.extend(stats_path.map(|path| Named { role: "stats", path }));
+    cli.see.outputs(&mut outputs)?;
     raytrace::start_run(&[Named { role: "mesh", path: &cli.input }], &outputs, stats_path)?;
     let output = ImageOutput::create(&cli.output)?;
     let diff_files =
         diff_paths.iter().map(|p| AtomicFile::create(p)).collect::<Result<Vec<_>, _>>()?;
     let stats_file = raytrace::create_stats_file(stats_path)?;
+    let see_files = cli.see.create()?;
     let mut frame = Frame::new(cli.mode.into(), cli.width, cli.height)?;
     let threads = resolve_threads(cli.threads);
     let pool = raytrace::thread_pool(threads)?;
@@ -181,6 +186,11 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let load = t.elapsed();
     let (camera, placed) = camera(cli, &mesh)?;
 
+    let samples = if cli.see.wanted() {
+        view::sample_pixels(cli.width, cli.height, cli.see.view_rays)
+    } else {
+        Vec::new()
+    };
     let comparing = cli.compare.is_some();
     let mut runs = Vec::with_capacity(backends.len());
     for (k, &backend) in backends.iter().enumerate() {
@@ -192,12 +202,14 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         let job = RenderJob {
             mesh: &mesh,
             camera: &camera,
-            // The image is the first back end's; the others only trace the hits.
+            // The image (and the viewer's sample) is the first back end's; the others only
+            // trace the hits.
             frame: (k == 0).then_some(&mut frame),
             size: (cli.width, cli.height),
             hits: comparing,
             progress: &progress,
             label,
+            samples: if k == 0 { &samples } else { &[] },
         };
         runs.push(pool.install(|| dispatch(backend, cli.precision, job))?);
     }
@@ -242,6 +254,32 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         let inputs = [("mesh", cli.input.as_path())];
         stats.record = Some(Record::new("raytrace", started, &inputs, output)?);
         written.push(stats.write_json(file)?);
+    }
+    if cli.see.wanted() {
+        progress.phase("writing the viewer and scene");
+        let (w, h) = (cli.width, cli.height);
+        let rays = samples
+            .iter()
+            .zip(&runs[0].sample_t)
+            .map(|(&(i, j), &t)| (camera.eye(), camera.direction(i, j, w, h), t));
+        let look_at = placed.look_at;
+        let extra = [(
+            "mode",
+            cli.mode.to_possible_value().map_or_else(String::new, |v| v.get_name().to_owned()),
+        )];
+        let run = view::Run {
+            mesh: &mesh,
+            camera: Some(view::RunCamera {
+                camera,
+                look_at,
+                width: w,
+                height: h,
+                png: view::png_of(&frame).context("--view: the image")?,
+            }),
+            layers: view::hit_and_miss_layers(&mesh, rays),
+            figures: raytrace::see::figures(&stats, &extra),
+        };
+        written.extend(see_files.write(&run)?);
     }
     render::output::commit_all(written)?;
     progress.finish();
@@ -309,20 +347,27 @@ fn index(backends: &[Backend], b: Backend) -> usize {
 /// options that place it again.
 fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<(Camera, CameraRecord)> {
     let aspect = f64::from(cli.width) / f64::from(cli.height);
-    let base = match cli.camera {
+    let base_eye = match cli.camera {
         CameraArg::Auto => {
             let (center, radius) = mesh.bounding_sphere();
-            let auto = Camera::auto(center, radius, cli.fov, aspect).context("--camera auto")?;
-            (auto.eye(), center)
+            Camera::auto(center, radius, cli.fov, aspect).context("--camera auto")?.eye()
         }
-        CameraArg::Origin => ([0.0; 3], [0.0, 0.0, 1.0]),
+        CameraArg::Origin => [0.0; 3],
     };
-    let eye = cli.eye.unwrap_or(base.0);
-    let look_at = cli.look_at.unwrap_or(base.1);
+    let eye = cli.eye.unwrap_or(base_eye);
     let up = cli.up.unwrap_or([0.0, 1.0, 0.0]);
+    let look_at = look_at(cli, mesh);
     let camera = Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")?;
     let placed = CameraRecord::new(&camera, look_at, up);
     Ok((camera, placed))
+}
+
+/// The point looked at: `--look-at`, else the `--camera` placement's.
+fn look_at(cli: &Cli, mesh: &Mesh) -> [f64; 3] {
+    cli.look_at.unwrap_or_else(|| match cli.camera {
+        CameraArg::Auto => mesh.bounding_sphere().0,
+        CameraArg::Origin => [0.0, 0.0, 1.0],
+    })
 }
 
 /// Builds the acceleration structure and renders the image and/or traces the hits for
@@ -336,6 +381,9 @@ struct RenderJob<'a> {
     progress: &'a Progress,
     /// Appended to the progress lines (` la-mt (2/5)`), empty for a single back end.
     label: String,
+    /// Pixels to trace again for `--view` and `--scene`, with the same camera and back end:
+    /// the frame keeps no hit distance in every mode (alpha asks only "any hit?").
+    samples: &'a [(u32, u32)],
 }
 
 /// What one back end's [`RenderJob`] gives.
@@ -344,6 +392,8 @@ struct Run {
     build: Duration,
     trace: Duration,
     hits: Option<Hits>,
+    /// The closest hit's distance of each of the job's `samples`.
+    sample_t: Vec<Option<f64>>,
 }
 
 impl Job for RenderJob<'_> {
@@ -369,6 +419,15 @@ impl Job for RenderJob<'_> {
         } else {
             None
         };
-        Ok(Run { name: I::NAME, build, trace: start.elapsed(), hits })
+        let trace = start.elapsed();
+        let sample_t = self
+            .samples
+            .iter()
+            .map(|&(i, j)| {
+                let ray = self.camera.ray::<I::Real>(i, j, w, h);
+                accel.closest_hit(&ray).map(|hit| hit.t.to_f64())
+            })
+            .collect();
+        Ok(Run { name: I::NAME, build, trace, hits, sample_t })
     }
 }
