@@ -539,10 +539,31 @@ fn parent() -> Result<(), String> {
             });
         }
     }
+    check_hits(&rows)?;
     print_table(&names, &rows);
     let out = if quick { criterion_dir() } else { results_dir() }.join("versus.csv");
     write_csv(&out, &rows).map_err(|e| format!("{}: {e}", out.display()))?;
     println!("wrote {}", out.display());
+    Ok(())
+}
+
+/// Every row that counts its hits against `core`'s on the same rays: they must agree up to
+/// rays through edges and vertices (at most one ray in a thousand), or the tracers did not see
+/// the same scene and rays, and no ratio between them means anything.
+fn check_hits(rows: &[Row]) -> Result<(), String> {
+    for r in rows {
+        let core = rows.iter().find(|c| {
+            c.path == "core" && c.scene == r.scene && c.view == r.view && c.ray_set == r.ray_set
+        });
+        if let (Some(h), Some(c)) = (r.hits, core.and_then(|c| c.hits))
+            && h.abs_diff(c) * 1000 > r.rays as u64
+        {
+            return Err(format!(
+                "{} hits {h} of the {} rays of {} {} {}, core {c}",
+                r.path, r.rays, r.scene, r.view, r.ray_set
+            ));
+        }
+    }
     Ok(())
 }
 
