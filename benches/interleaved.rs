@@ -23,7 +23,9 @@
 //! embreex`; another interpreter with `WEDGE_PYTHON`), each round also runs
 //! `benches/embree/trace.py` in its own process, on the same triangles and the same rays
 //! rounded to `f32` (written to `embree-input/` under the criterion directory): Embree 4, one
-//! `rtcIntersect1`/`rtcOccluded1` call per ray, one thread, on the bunny. It gives two rows:
+//! `rtcIntersect1`/`rtcOccluded1` call per ray, one thread, on the bunny, warm (each set cast
+//! once, untimed, before the timed traces: Embree's first casts in a process run about 2x
+//! slower). It gives two rows:
 //! `embree4`, as measured, and `embree4-net`, with the binding's own cost per ray taken off (the
 //! Cython loop and the call, timed on an empty scene with the same rays: 10 to 13 ns on the machine
 //! of `results/`), a bound in Embree's favour. The issue's targets were measured on another
@@ -31,12 +33,13 @@
 //! without `embreex` the rows are left out, with a note.
 //!
 //! Run: `cargo bench -p wedge-benches --bench interleaved` (about 25 minutes for 22 back ends).
+//! The views, meshes, references (tinybvh) and user-facing paths of issue 18 are the sibling
+//! bench `versus`, on the same machinery (`wedge_benches::alternate`).
+//!
 //! With `WEDGE_BENCH_QUICK=1`: one round of 64 x 64 primary and 4,096 incoherent rays, written to
 //! the criterion directory (a smoke test).
 
-use std::fs::File;
 use std::hint::black_box;
-use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 use std::time::Instant;
@@ -46,6 +49,10 @@ use bvh::accel::Accel;
 use intersect::{Intersector, Ray};
 use scene::Mesh;
 use serde::Serialize;
+use wedge_benches::alternate::{
+    EMBREE_SCRIPT, alternate, embree_available, embree_net, figures_of, python, run_self,
+    write_rays, write_triangles,
+};
 use wedge_benches::throughput::rays::{
     INCOHERENT_SEED, Query, RaySet, incoherent_rays, primary_rays,
 };
@@ -67,8 +74,6 @@ const CHILD: &str = "WEDGE_INTERLEAVED_CHILD";
 const EMBREE: &str = "embree4";
 /// See [`EMBREE`].
 const EMBREE_NET: &str = "embree4-net";
-/// The script that traces the rays with Embree.
-const EMBREE_SCRIPT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/embree/trace.py");
 
 /// One row of `interleaved.csv`.
 #[derive(Serialize)]
@@ -150,19 +155,6 @@ fn child(spec: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// The Python interpreter for the Embree reference.
-fn python() -> String {
-    std::env::var("WEDGE_PYTHON").unwrap_or_else(|_| "python3".to_owned())
-}
-
-/// Whether the Embree reference can run: `embreex` imports.
-fn embree_available() -> bool {
-    Command::new(python())
-        .args(["-c", "import embreex"])
-        .output()
-        .is_ok_and(|out| out.status.success())
-}
-
 /// Writes the bunny and the rays for the Embree script: `bunny.tri` (each triangle's
 /// vertices) and `primary.ray`, `incoherent.ray` (origin and direction per ray; each written
 /// once, though two sets share the primary rays), little-endian `f32`, the rays rounded from
@@ -173,26 +165,14 @@ fn export_for_embree(
     sets: &[(RaySet, Vec<Ray<f64>>)],
     dir: &Path,
 ) -> std::io::Result<Vec<String>> {
-    fn write(path: &Path, values: impl Iterator<Item = f32>) -> std::io::Result<()> {
-        let mut out = BufWriter::new(File::create(path)?);
-        for x in values {
-            out.write_all(&x.to_le_bytes())?;
-        }
-        out.flush()
-    }
     std::fs::create_dir_all(dir)?;
-    let triangles = mesh.triangles::<f32>();
-    write(
-        &dir.join("bunny.tri"),
-        triangles.iter().flat_map(|t| t.vertices().into_iter().flatten()),
-    )?;
-    let mut args = vec![dir.display().to_string()];
+    write_triangles(&dir.join("bunny.tri"), mesh)?;
+    let mut args = vec![dir.display().to_string(), "bunny.tri".to_owned()];
     let mut written = Vec::new();
     for (set, rays) in sets {
         let file = if set.is_primary() { "primary" } else { "incoherent" };
         if !written.contains(&file) {
-            let values = rays.iter().flat_map(|r| r.origin.into_iter().chain(r.dir));
-            write(&dir.join(format!("{file}.ray")), values.map(|x| x as f32))?;
+            write_rays(&dir.join(format!("{file}.ray")), rays)?;
             written.push(file);
         }
         let query = match set.query() {
@@ -207,20 +187,11 @@ fn export_for_embree(
 /// Runs one child (a back end of ours, or with `embree` the Embree script with those
 /// arguments) and parses its figures.
 fn run_child(spec: &str, embree: &[String]) -> Result<Vec<f64>, String> {
-    let out = if spec.starts_with(EMBREE) {
-        Command::new(python()).arg(EMBREE_SCRIPT).args(embree).output()
+    if spec.starts_with(EMBREE) {
+        figures_of(spec, Command::new(python()).arg(EMBREE_SCRIPT).args(embree))
     } else {
-        let exe = std::env::current_exe().map_err(|e| e.to_string())?;
-        Command::new(exe).env(CHILD, spec).output()
+        run_self(CHILD, spec)
     }
-    .map_err(|e| e.to_string())?;
-    if !out.status.success() {
-        return Err(format!("{spec}: {}", String::from_utf8_lossy(&out.stderr).trim()));
-    }
-    String::from_utf8_lossy(&out.stdout)
-        .split_whitespace()
-        .map(|s| s.parse().map_err(|e| format!("{spec}: {e}")))
-        .collect()
 }
 
 fn parent() -> Result<(), String> {
@@ -245,27 +216,17 @@ fn parent() -> Result<(), String> {
         spec_names.push((EMBREE_NET.to_owned(), "f32".to_owned()));
     }
     // figures[spec][scene * SETS.len() + set] over the rounds (Embree's: the first scene's).
+    let names: Vec<String> =
+        spec_names[..measured].iter().map(|(b, p)| format!("{b}:{p}")).collect();
+    let mut figures = alternate(&names, rounds, |i| run_child(&names[i], &embree_args))?;
+    if !embree_args.is_empty() {
+        let (raw, net) = embree_net(&figures[measured - 1]);
+        figures[measured - 1] = raw;
+        figures.push(net);
+    }
     let series = SCENES.len() * SETS.len();
-    let mut figures = vec![vec![Vec::new(); series]; spec_names.len()];
-    for round in 0..rounds {
-        for k in 0..measured {
-            let i = (k + round) % measured;
-            let (b, p) = &spec_names[i];
-            let got = run_child(&format!("{b}:{p}"), &embree_args)?;
-            eprintln!("round {round} {b} {p}: {got:?}");
-            if b == EMBREE {
-                // The figures, then the binding's cost per ray (ns) of each set.
-                let (raw, cost) = got.split_at(SETS.len());
-                for (set, (&x, &ns)) in raw.iter().zip(cost).enumerate() {
-                    figures[i][set].push(x);
-                    figures[measured][set].push(1e3 / (1e3 / x - ns));
-                }
-            } else {
-                for (set, x) in got.into_iter().enumerate() {
-                    figures[i][set].push(x);
-                }
-            }
-        }
+    for f in &mut figures {
+        f.resize(series, Vec::new());
     }
     let cpu = machine();
     // Each series sorted (by `median`): its minimum first and its maximum last.

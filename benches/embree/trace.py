@@ -1,14 +1,19 @@
-"""Embree 4 on the rays of `cargo bench --bench interleaved`: the reference row.
+"""Embree 4 on the rays of `cargo bench --bench interleaved` (or `versus`): the reference row.
 
-Run by the interleaved bench (never by hand, though it can be) as
+Run by the benches (never by hand, though it can be) as
 
-    python3 trace.py DIR RAYS:QUERY [RAYS:QUERY ...]
+    python3 trace.py DIR MESH.tri RAYS:QUERY [RAYS:QUERY ...]
 
-where DIR holds what the bench wrote: `bunny.tri` (n x 3 x 3 little-endian f32, each
+where DIR holds what the bench wrote: MESH.tri (n x 3 x 3 little-endian f32, each
 triangle's vertices) and `RAYS.ray` for each RAYS named (n x 6 f32: origin, then
-direction), and QUERY is `closest` or `any`. Prints one line: for each set the best Mrays/s of three traces,
-then for each set the binding's own cost per ray in ns (the same rays and query on an empty
-scene, where Embree returns at once), which the bench subtracts for its `embree4-net` rows.
+direction), and QUERY is `closest` or `any`. Prints one line: for each set the best Mrays/s
+of three traces, then for each set the binding's own cost per ray in ns (the same rays and
+query on an empty scene, where Embree returns at once), which the benches subtract for their
+`embree4-net` rows.
+
+Measured warm: each set is cast once, untimed, before the three timed traces (in a fresh
+process Embree's first casts run about 2x slower; the best of three alone would hide that
+only when the first trace is not the best).
 
 Uses the `embreex` package (pip install embreex): Embree 4 behind a Cython loop that makes
 one `rtcIntersect1` or `rtcOccluded1` call per ray, on one thread, with t in [0, 1e37].
@@ -27,6 +32,7 @@ QUERIES = {"closest": "INTERSECT", "any": "OCCLUDED"}
 
 
 def best_mrays(scene, origins, dirs, query):
+    scene.run(origins, dirs, query=query)  # the warm-up cast, discarded
     best = 0.0
     for _ in range(REPEATS):
         start = time.perf_counter()
@@ -36,8 +42,8 @@ def best_mrays(scene, origins, dirs, query):
 
 
 def main():
-    folder, specs = sys.argv[1], sys.argv[2:]
-    triangles = np.fromfile(f"{folder}/bunny.tri", dtype="<f4").reshape(-1, 3, 3)
+    folder, mesh, specs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    triangles = np.fromfile(f"{folder}/{mesh}", dtype="<f4").reshape(-1, 3, 3)
     scene = rtcore_scene.EmbreeScene()
     TriangleMesh(scene, triangles)
     empty = rtcore_scene.EmbreeScene()

@@ -19,6 +19,7 @@
 #![deny(missing_docs)]
 
 pub mod accuracy;
+pub mod alternate;
 pub mod clock;
 pub mod throughput;
 

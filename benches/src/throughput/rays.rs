@@ -80,6 +80,13 @@ pub fn primary_rays(mesh: &Mesh, width: u32, height: u32) -> Vec<Ray<f64>> {
     let aspect = f64::from(width) / f64::from(height);
     let camera = Camera::auto(center, radius, DEFAULT_FOV_DEG, aspect)
         .expect("a loaded mesh has finite bounds");
+    camera_rays(&camera, width, height)
+}
+
+/// One ray per pixel of a `width x height` image seen by `camera`, row by row from the top
+/// left, through pixel centres (`Camera::direction`, in `f64`).
+#[must_use]
+pub fn camera_rays(camera: &Camera, width: u32, height: u32) -> Vec<Ray<f64>> {
     (0..height)
         .flat_map(|j| (0..width).map(move |i| (i, j)))
         .map(|(i, j)| Ray::new(camera.eye(), camera.direction(i, j, width, height)))
