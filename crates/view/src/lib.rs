@@ -113,8 +113,8 @@ pub fn sample_indices(count: usize, n: usize) -> Vec<usize> {
 }
 
 /// The length drawn for a ray that missed: short, the distance from `from` to the near side
-/// of the mesh's bounding sphere `(centre, radius)`, so that misses show where they went without hiding the mesh
-/// (the sphere's radius when `from` is inside it).
+/// of the mesh's bounding sphere `(centre, radius)`, so that misses show where they went
+/// without hiding the mesh (the sphere's radius when `from` is inside it).
 #[must_use]
 pub fn miss_length((c, r): ([f64; 3], f64), from: [f64; 3]) -> f64 {
     let d = (0..3).map(|k| (c[k] - from[k]).powi(2)).sum::<f64>().sqrt();
