@@ -1,7 +1,8 @@
 // Opens raytrace's --view pages in headless Chromium (Debian's /usr/bin/chromium, driven by
 // playwright-core) and validates its --scene files with the Khronos glTF validator.
 //
-//   node tests/browser/viewer-test.mjs [--screenshot docs/viewer-bunny.png] [--mesh FILE]...
+//   node tests/browser/viewer-test.mjs [--screenshot docs/viewer-bunny.png]
+//     [--compare-screenshot docs/viewer-compare.png] [--mesh FILE]...
 //
 // Run from the repository root after `cargo build --release -p raytrace`. Exits non-zero on
 // any failure; screenshots of failing pages go to target/test-output/.
@@ -20,6 +21,9 @@ const args = process.argv.slice(2);
 const option = (name) => { const k = args.indexOf(name); return k >= 0 ? args[k + 1] : null; };
 const extraMeshes = args.flatMap((a, k) => (args[k - 1] === '--mesh' ? [a] : []));
 const screenshot = option('--screenshot');
+const compareScreenshot = option('--compare-screenshot');
+// raycast sits beside raytrace (the same cargo profile).
+const raycast = path.join(path.dirname(raytrace), 'raycast');
 
 // The IoU the page's camera view must reach against our own alpha render of the same camera.
 // Both sample pixel centres with the same projection, so they differ only where a pixel
@@ -117,6 +121,18 @@ async function pngMask(page, file) {
   return Uint8Array.from(bits);
 }
 
+// A new page on `html` with its console errors collected, once the first frame is drawn.
+async function open(html, viewport, hash = '') {
+  const page = await browser.newPage({ viewport, deviceScaleFactor: 1 });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(pathToFileURL(html).href + hash);
+  await page.waitForFunction(() => window.wedge && window.wedge.firstFrameMs !== null,
+    null, { timeout: 120000 });
+  return { page, errors };
+}
+
 const timings = [];
 for (const scene of scenes) {
   const name = scene.name;
@@ -137,14 +153,8 @@ for (const scene of scenes) {
     + (report.issues.numErrors ? ' ' + JSON.stringify(report.issues.messages.slice(0, 5)) : ''),
     name);
 
-  const page = await browser.newPage({ viewport: { width: W, height: H }, deviceScaleFactor: 1 });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
   const t0 = Date.now();
-  await page.goto(pathToFileURL(html).href + '#camera');
-  await page.waitForFunction(() => window.wedge && window.wedge.firstFrameMs !== null,
-    null, { timeout: 120000 });
+  const { page, errors } = await open(html, { width: W, height: H }, '#camera');
   const firstFrame = await page.evaluate(() => window.wedge.firstFrameMs);
   timings.push({ name, triangles: figures.triangles, pageBytes: fs.statSync(html).size,
     firstFrameMs: Math.round(firstFrame), openMs: Date.now() - t0, writeMs });
@@ -210,6 +220,97 @@ for (const scene of scenes) {
   if (!ok) await shot('overview');
   await page.close();
 }
+
+// `--compare`: the layers of the rays where back ends disagree. On the torus, `la-mt` (not
+// watertight) misses rays at shared edges that `la` hits: the page opens on those rays alone.
+{
+  const name = 'torus-compare';
+  const html = path.join(out, `${name}.html`);
+  const stats = path.join(out, `${name}-stats.json`);
+  // At this size 8 of la-mt's rays pass through cracks (at 320 x 240, none does).
+  execFileSync(raytrace, [path.join(root, 'obj/torus.obj'), path.join(out, `${name}.png`), '480',
+    '360', '-q', '--compare', 'la,la-mt', '--view', html, '--stats', stats]);
+  const figures = JSON.parse(fs.readFileSync(stats, 'utf8'));
+  const { page, errors } = await open(html, { width: 900, height: 600 });
+  let ok = true;
+  const boxes = await page.$$eval('#layers input',
+    (els) => els.map((e) => [e.dataset.layer, e.checked]));
+  const on = Object.fromEntries(boxes);
+  ok &= check(on['rays that hit'] === false && on['rays that missed'] === false
+    && on['la hit'] === true && on['la-mt missed'] === true,
+    `disagreement layers shown, the sample hidden: ${JSON.stringify(boxes)}`, name);
+  const crackPixels = figures.compare.pairs[0].a_only;
+  ok &= check(crackPixels > 0, `la hits ${crackPixels} pixels that la-mt misses`, name);
+  const panel = await page.textContent('#panel');
+  ok &= check(panel.includes(`la-mt missed (`), 'the panel lists la-mt\'s misses', name);
+  const all = await pixels(page);
+  const missBox = page.locator('#layers input[data-layer="la-mt missed"]');
+  await missBox.uncheck();
+  const withoutMisses = await pixels(page);
+  await missBox.check();
+  const laBox = page.locator('#layers input[data-layer="la hit"]');
+  await laBox.uncheck();
+  const withoutLa = await pixels(page);
+  await laBox.check();
+  ok &= check(differing(all, withoutMisses) > 20 && differing(all, withoutLa) > 20,
+    `the layers are drawn (${differing(all, withoutMisses)} pixels change without la-mt's`
+    + ` misses, ${differing(all, withoutLa)} without la's hits)`, name);
+  if (compareScreenshot) {
+    // la-mt's hits mostly lie on la's (the same point, another triangle at an edge).
+    await page.locator('#layers input[data-layer="la-mt hit"]').uncheck();
+    await page.uncheck('#cam');
+    await page.check('#wire');
+    const v = await page.locator('#view').boundingBox();
+    await page.mouse.move(v.x + v.width / 2, v.y + v.height / 2);
+    await page.mouse.wheel(0, -900);
+    await pixels(page);
+    await page.screenshot({ path: compareScreenshot });
+    console.log(`wrote ${compareScreenshot}`);
+  }
+  ok &= check(errors.length === 0, `no console or page errors ${JSON.stringify(errors)}`, name);
+  if (!ok) await page.screenshot({ path: path.join(out, `FAILED-${name}.png`) });
+  await page.close();
+}
+
+// `raycast --view`: rays from anywhere, no camera. A fan of rays from one side of the
+// icosphere (radius 1 about the origin), written as a float64 (N, 6) .npy.
+{
+  const name = 'raycast';
+  const rays = path.join(out, 'raycast-rays.npy');
+  const n = 400;
+  const data = new Float64Array(n * 6);
+  for (let k = 0; k < n; k++) {
+    const a = (k / n) * 2 * Math.PI;
+    data.set([3 * Math.cos(a), 3 * Math.sin(a), 0.3, -Math.cos(a), -Math.sin(a), 0], 6 * k);
+  }
+  let header = `{'descr': '<f8', 'fortran_order': False, 'shape': (${n}, 6), }`;
+  header += ' '.repeat(63 - ((10 + header.length) % 64)) + '\n';
+  const head = Buffer.alloc(10);
+  head.write('\x93NUMPY', 0, 'latin1');
+  head.writeUInt8(1, 6);
+  head.writeUInt8(0, 7);
+  head.writeUInt16LE(header.length, 8);
+  fs.writeFileSync(rays, Buffer.concat([head, Buffer.from(header, 'latin1'),
+    Buffer.from(data.buffer)]));
+  const html = path.join(out, `${name}.html`);
+  execFileSync(raycast, [path.join(root, 'obj/icosphere.obj'), rays,
+    path.join(out, 'raycast-hits.npy'), '-q', '--view', html, '--view-rays', String(n)]);
+  const { page, errors } = await open(html, { width: 900, height: 600 });
+  let ok = true;
+  const img = await pixels(page);
+  const mesh = covered(img).reduce((a, b) => a + b, 0);
+  const orange = count(img, HIT_RGB, 12);
+  ok &= check(mesh > 1000 && orange > 50,
+    `mesh and rays drawn (${mesh} non-background pixels, ${orange} ray-coloured)`, name);
+  ok &= check(await page.isDisabled('#cam') && await page.isDisabled('#camview'),
+    'no camera to show (its toggle and button disabled)', name);
+  const panel = await page.textContent('#panel');
+  ok &= check(panel.includes('rays that hit (400)'), 'every ray hits and is listed', name);
+  ok &= check(errors.length === 0, `no console or page errors ${JSON.stringify(errors)}`, name);
+  if (!ok) await page.screenshot({ path: path.join(out, `FAILED-${name}.png`) });
+  await page.close();
+}
+
 await browser.close();
 for (const t of timings) {
   console.log(`timing ${t.name}: ${t.triangles} triangles, page ${(t.pageBytes / 1e6).toFixed(2)} MB,`

@@ -167,7 +167,7 @@
   const layers = meta.layers.map((l, k) => {
     const data = f32('layer' + k);
     for (let s = 0; s < data.length; s += 3) grow([data[s], data[s + 1], data[s + 2]]);
-    return { ...l, vao: vao([[data, 3]]), vertices: data.length / 3, on: true };
+    return { ...l, vao: vao([[data, 3]]), vertices: data.length / 3, on: l.shown };
   });
   const sceneCentre = mul(add(lo, hi), 0.5);
   const sceneRadius = Math.max(len(sub(hi, lo)) / 2, 1e-30);
@@ -350,7 +350,7 @@
     const label = document.createElement('label');
     const box = document.createElement('input');
     box.type = 'checkbox';
-    box.checked = true;
+    box.checked = l.on;
     box.dataset.layer = l.name;
     box.addEventListener('change', () => { l.on = box.checked; redraw(); });
     const swatch = document.createElement('span');

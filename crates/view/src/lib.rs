@@ -17,6 +17,7 @@ pub mod glb;
 pub mod page;
 
 use render::camera::Camera;
+use render::compare::Comparison;
 use scene::Mesh;
 
 /// What a ray of a layer did.
@@ -40,6 +41,11 @@ pub struct RayLayer {
     pub kind: SegmentKind,
     /// Origin and end of each segment, in the mesh's coordinates.
     pub segments: Vec<[[f64; 3]; 2]>,
+    /// Whether the page draws the layer faint (the many misses of a ray sample), not solid.
+    pub faint: bool,
+    /// Whether the page shows the layer when it opens (its toggle starts ticked); the `.glb`
+    /// writes every layer.
+    pub shown: bool,
 }
 
 /// The camera of a run that rendered an image.
@@ -145,14 +151,84 @@ pub fn hit_and_miss_layers(
             colour: HIT_COLOUR,
             kind: SegmentKind::Hit,
             segments: hits,
+            faint: false,
+            shown: true,
         },
         RayLayer {
             name: "rays that missed".into(),
             colour: MISS_COLOUR,
             kind: SegmentKind::Miss,
             segments: misses,
+            faint: true,
+            shown: true,
         },
     ]
+}
+
+/// The colour of back end `k` of `n` in a comparison's layers: hues evenly spaced around the
+/// colour wheel from red (HSV with saturation 0.7 and value 1), so that neighbours in the list
+/// differ most when there are few.
+#[must_use]
+pub fn palette(k: usize, n: usize) -> [f32; 3] {
+    #[allow(clippy::cast_precision_loss)]
+    let hue = 6.0 * k as f32 / n.max(1) as f32;
+    let s = 0.7;
+    // HSV to RGB: each channel's distance around the wheel from its own primary.
+    let channel = |offset: f32| {
+        let d = (hue - offset).rem_euclid(6.0);
+        let d = d.min(6.0 - d);
+        1.0 - s * (d - 1.0).clamp(0.0, 1.0)
+    };
+    [channel(0.0), channel(2.0), channel(4.0)]
+}
+
+/// How far past the farthest hit among the other back ends a "missed" ray of
+/// [`disagreement_layers`] is drawn, as a factor of that distance: far enough to show that the
+/// ray passes through the surface where the others stop.
+pub const MISS_OVERSHOOT: f64 = 1.25;
+
+/// The layers of a `--compare` run: the rays where back ends disagree, coloured by which back
+/// end hit what.
+///
+/// Of the comparison's disagreeing pixels (about `n` of them, evenly spaced in pixel order,
+/// all when there are fewer), each back end gets up to two layers in its [`palette`] colour:
+/// "NAME hit", the rays it hit, drawn to its own hit point, and "NAME missed", the rays it
+/// missed, drawn (solid: they are few, and the point) through the surface to
+/// [`MISS_OVERSHOOT`] times the farthest hit the others found. A crack of a non-watertight
+/// kernel is a "missed" ray of that back end passing through the mesh beside another's "hit";
+/// two back ends that hit different triangles at an edge show two segments ending at the same
+/// place. Empty layers are left out.
+#[must_use]
+pub fn disagreement_layers(comparison: &Comparison, n: usize) -> Vec<RayLayer> {
+    let names = &comparison.backends;
+    let mut hits = vec![Vec::new(); names.len()];
+    let mut misses = vec![Vec::new(); names.len()];
+    let all = &comparison.disagreements;
+    for d in sample_indices(all.len(), n).into_iter().map(|k| &all[k]) {
+        let farthest = d.hits.iter().flatten().map(|h| h.t).fold(0.0, f64::max);
+        let through = farthest * MISS_OVERSHOOT;
+        let end = core::array::from_fn(|c| d.origin[c] + through * d.direction[c]);
+        for k in 0..names.len() {
+            match d.hit_point(k) {
+                Some(p) => hits[k].push([d.origin, p]),
+                None => misses[k].push([d.origin, end]),
+            }
+        }
+    }
+    let mut layers = Vec::new();
+    for (k, (hit, miss)) in hits.into_iter().zip(misses).enumerate() {
+        let colour = palette(k, names.len());
+        for (segments, kind, what) in
+            [(hit, SegmentKind::Hit, "hit"), (miss, SegmentKind::Miss, "missed")]
+        {
+            if !segments.is_empty() {
+                let name = format!("{} {what}", names[k]);
+                let layer = RayLayer { name, colour, kind, segments, faint: false, shown: true };
+                layers.push(layer);
+            }
+        }
+    }
+    layers
 }
 
 /// The image as PNG bytes, for [`RunCamera::png`].
@@ -192,5 +268,54 @@ mod tests {
         assert_eq!(sample_pixels(1, 1, 5), vec![(0, 0)]);
         assert_eq!(sample_indices(10, 4), vec![0, 2, 5, 7]);
         assert_eq!(sample_indices(3, 4), vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn palette_spreads_hues_and_stays_in_range() {
+        assert_eq!(palette(0, 3), [1.0, 0.3, 0.3]);
+        assert_eq!(palette(1, 3), [0.3, 1.0, 0.3]);
+        assert_eq!(palette(2, 3), [0.3, 0.3, 1.0]);
+        for k in 0..22 {
+            let c = palette(k, 22);
+            assert!(c.iter().all(|x| (0.3..=1.0).contains(x)), "{c:?}");
+            assert_ne!(c, palette((k + 1) % 22, 22));
+        }
+    }
+
+    #[test]
+    fn disagreement_layers_show_who_hit_what() {
+        use render::compare::{Disagreement, PixelHit};
+        let ray = |hits: Vec<Option<PixelHit>>| Disagreement {
+            pixel: [0, 0],
+            origin: [0.0, 0.0, -4.0],
+            direction: [0.0, 0.0, 1.0],
+            hits,
+        };
+        let hit = |prim, t| Some(PixelHit { prim, t });
+        let comparison = Comparison {
+            width: 2,
+            height: 1,
+            backends: vec!["a".into(), "b".into()],
+            pairs: Vec::new(),
+            disagreements: vec![
+                // A crack of b: a hits at t = 2, b passes through.
+                ray(vec![hit(7, 2.0), None]),
+                // An edge: both hit at t = 3, different triangles.
+                ray(vec![hit(1, 3.0), hit(2, 3.0)]),
+            ],
+        };
+        let layers = disagreement_layers(&comparison, 10);
+        let names: Vec<_> = layers.iter().map(|l| l.name.as_str()).collect();
+        assert_eq!(names, ["a hit", "b hit", "b missed"]);
+        let o = [0.0, 0.0, -4.0];
+        assert_eq!(layers[0].segments, [[o, [0.0, 0.0, -2.0]], [o, [0.0, 0.0, -1.0]]]);
+        assert_eq!(layers[1].segments, [[o, [0.0, 0.0, -1.0]]]);
+        assert_eq!(layers[2].segments, [[o, [0.0, 0.0, -1.5]]]);
+        assert_eq!(layers[2].kind, SegmentKind::Miss);
+        assert_ne!(layers[0].colour, layers[1].colour);
+        assert_eq!(layers[1].colour, layers[2].colour);
+        // A sample of one ray keeps the first disagreement only.
+        assert_eq!(disagreement_layers(&comparison, 1).len(), 2);
+        assert!(disagreement_layers(&comparison, 0).is_empty());
     }
 }

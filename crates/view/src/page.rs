@@ -16,7 +16,7 @@ use base64::Engine as _;
 use base64::engine::general_purpose::STANDARD;
 use serde_json::json;
 
-use crate::{Run, SegmentKind};
+use crate::Run;
 
 const HTML: &str = include_str!("../page/viewer.html");
 const JS: &str = include_str!("../page/viewer.js");
@@ -76,7 +76,8 @@ fn write_data(run: &Run<'_>, w: &mut impl Write) -> io::Result<()> {
         layers.push(json!({
             "name": layer.name,
             "colour": layer.colour,
-            "faint": layer.kind == SegmentKind::Miss,
+            "faint": layer.faint,
+            "shown": layer.shown,
             "count": layer.segments.len(),
         }));
     }

@@ -276,7 +276,7 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
                 height: h,
                 png: view::png_of(&frame).context("--view: the image")?,
             }),
-            layers: view::hit_and_miss_layers(&mesh, rays),
+            layers: see_layers(&mesh, rays, comparison.as_ref(), cli.see.view_rays),
             figures: raytrace::see::figures(&stats, &extra),
         };
         written.extend(see_files.write(&run)?);
@@ -297,6 +297,26 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         println!("{}: {} -> {}", cli.input.display(), stats.summary(), cli.output.display());
     }
     Ok(())
+}
+
+/// The viewer's ray layers: the sample's hits and misses, and with `--compare` the rays where
+/// the back ends disagree, which the page then shows alone at first (the sample's layers start
+/// hidden: a crack is one ray among thousands).
+fn see_layers(
+    mesh: &scene::Mesh,
+    rays: impl IntoIterator<Item = ([f64; 3], [f64; 3], Option<f64>)>,
+    comparison: Option<&render::compare::Comparison>,
+    n: usize,
+) -> Vec<view::RayLayer> {
+    let mut layers = view::hit_and_miss_layers(mesh, rays);
+    if let Some(comparison) = comparison {
+        let disagree = view::disagreement_layers(comparison, n);
+        if !disagree.is_empty() {
+            layers.iter_mut().for_each(|l| l.shown = false);
+        }
+        layers.extend(disagree);
+    }
+    layers
 }
 
 /// The back ends to render with: `--backend`'s, or `--compare`'s list (every back end when
