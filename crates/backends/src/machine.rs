@@ -40,6 +40,14 @@ pub fn target_features() -> String {
     if names.is_empty() { "none".to_owned() } else { names.join(" ") }
 }
 
+/// The instruction set of the BVH's node test in this process (`bvh::Isa::current`): chosen at
+/// run time from the CPU, so it may be wider than [`target_features`] (`avx512` on an AVX-512
+/// machine with the `avx2` baseline build), or lowered by `WEDGE_ISA=avx2`.
+#[must_use]
+pub fn node_test() -> &'static str {
+    bvh::Isa::current().name()
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -54,6 +62,7 @@ mod tests {
             assert!(!features.contains("avx2"), "{features}");
         }
         assert!(super::cores() >= 1);
+        assert!(["avx2", "scalar", "avx512"].contains(&super::node_test()));
         assert!(!super::cpu_model().is_empty());
     }
 }

@@ -1,8 +1,94 @@
-//! Four `f32` lanes for the build: one SSE register on x86-64 (where SSE2 is always present),
-//! a plain array elsewhere. Lanes 0 to 2 are x, y, z; lane 3 is carried along and ignored.
+//! The instruction sets: [`Isa`], the node test's, chosen once per process at run time; and
+//! [`F4`], four `f32` lanes for the build, one SSE register on x86-64 (where SSE2 is always
+//! present), a plain array elsewhere (lanes 0 to 2 are x, y, z; lane 3 is carried along and
+//! ignored).
 
 #[cfg(target_arch = "x86_64")]
 use core::arch::x86_64::*;
+#[cfg(target_arch = "x86_64")]
+use std::sync::atomic::{AtomicU8, Ordering};
+
+/// The environment variable that overrides the run-time choice of [`Isa`]: `avx2` (or
+/// `baseline`) keeps the build's baseline node test on a machine with AVX-512, so that a bench
+/// can pair both paths on one machine; `avx512` or `auto` (or unset) takes AVX-512 where the
+/// CPU has it. Read once, at the first traversal.
+pub const ISA_ENV: &str = "WEDGE_ISA";
+
+/// The instruction set of the BVH's node test (and of the traversal loop around it).
+///
+/// Both give the same answers bit for bit: the same operations on the same values in the same
+/// order, only in wider registers. The choice is made once per process ([`Isa::current`]),
+/// from the CPU (`is_x86_feature_detected!`), not from the build's target features, so one
+/// binary built for the x86-64-v3 baseline uses AVX-512 where the machine has it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Isa {
+    /// The build's own: AVX2 on the workspace's x86-64-v3 baseline, lane by lane without it.
+    Baseline,
+    /// AVX-512 (F and VL): `f64` rays test the eight boxes in one 8-lane register, and both
+    /// precisions compare into a mask register.
+    Avx512,
+}
+
+/// [`Isa::current`]'s cache: 0 until chosen, then 1 + the choice.
+#[cfg(target_arch = "x86_64")]
+static CHOSEN: AtomicU8 = AtomicU8::new(0);
+
+impl Isa {
+    /// The name used in records and by [`ISA_ENV`]: `avx2`, `scalar` (a build without AVX2)
+    /// or `avx512`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Isa::Baseline if cfg!(all(target_arch = "x86_64", target_feature = "avx2")) => "avx2",
+            Isa::Baseline => "scalar",
+            Isa::Avx512 => "avx512",
+        }
+    }
+
+    /// The best node test this CPU runs, ignoring [`ISA_ENV`].
+    #[must_use]
+    pub fn detected() -> Isa {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx512f")
+            && std::arch::is_x86_feature_detected!("avx512vl")
+        {
+            return Isa::Avx512;
+        }
+        Isa::Baseline
+    }
+
+    /// The node test in use: [`Isa::detected`], unless [`ISA_ENV`] asks for the baseline.
+    /// Chosen at the first call and the same for the rest of the process.
+    #[must_use]
+    #[inline]
+    pub fn current() -> Isa {
+        #[cfg(target_arch = "x86_64")]
+        {
+            match CHOSEN.load(Ordering::Relaxed) {
+                1 => Isa::Baseline,
+                2 => Isa::Avx512,
+                _ => Self::choose(),
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        {
+            Isa::Baseline
+        }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[cold]
+    fn choose() -> Isa {
+        let wanted = std::env::var(ISA_ENV).unwrap_or_default();
+        let isa = match wanted.trim().to_ascii_lowercase().as_str() {
+            "avx2" | "baseline" | "scalar" => Isa::Baseline,
+            _ => Self::detected(),
+        };
+        // Threads racing here all store the same value.
+        CHOSEN.store(1 + isa as u8, Ordering::Relaxed);
+        isa
+    }
+}
 
 /// Four `f32` lanes.
 #[derive(Clone, Copy, Debug)]
@@ -150,6 +236,16 @@ impl F4 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_isa_is_chosen_once_and_named() {
+        let isa = Isa::current();
+        assert_eq!(Isa::current(), isa);
+        // The override can only lower the choice, never raise it above the CPU's.
+        assert!(isa == Isa::Baseline || Isa::detected() == Isa::Avx512);
+        assert!(["avx2", "scalar", "avx512"].contains(&isa.name()));
+        println!("node test in use: {}, detected: {}", isa.name(), Isa::detected().name());
+    }
 
     #[test]
     fn lanes_and_nan_handling() {
