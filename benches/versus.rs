@@ -54,18 +54,19 @@
 //! rows; each writes `results/versus-<set>.csv` (a list of rows instead of a set's name writes
 //! `versus.partial.csv` in the criterion directory):
 //!
-//! - `isa`: `core` and `core-avx2`, the core loop with the node test the CPU allows (AVX-512
-//!   here) and with the AVX2 baseline (`WEDGE_ISA=avx2` in the child, see `bvh::Isa`), and
-//!   the same in `f64` (`core-f64`, `core-f64-avx2`);
+//! - `isa`: `core` and `core-avx2`, the core loop with the default node test (AVX-512 for
+//!   `f32` where the CPU has it) and with the AVX2 baseline (`WEDGE_ISA=avx2` in the child, see
+//!   `bvh::Isa`), and in `f64` with the default (AVX2) and with AVX-512 (`core-f64`,
+//!   `core-f64-avx512`, `WEDGE_ISA=avx512`);
 //! - `render`: `core` and `render` (the render path within 5% of the core loop);
 //! - `threads`: one against two threads of `render_frame` (`render`, `render-2t`), of the
 //!   array path (`array`, `array-2t`: the throughput bench's `trace_parallel`, 2048 rays per
 //!   task, on a pool of one or two threads) and of `raycast` (`raycast`, `raycast-2t`).
 //!
-//! A row name ending in `-2t` runs on two threads, in `-f64` in `f64`, in `-avx2` with the
-//! AVX2 node test (suffixes in that order). The
-//! table printed at the end adds, per pair, the ratio of the two (`-2t` over one thread, the
-//! CPU's node test over `-avx2`). `WEDGE_VERSUS_SCENES=bunny` (or `bunny-sub2`) keeps one
+//! A row name ending in `-2t` runs on two threads, in `-f64` in `f64`, in `-avx2` or
+//! `-avx512` with that node test (suffixes in that order). The table printed at the end adds,
+//! per pair, the ratio of the two (`-2t` over one thread, the default node test over `-avx2`,
+//! `-avx512` over the default). `WEDGE_VERSUS_SCENES=bunny` (or `bunny-sub2`) keeps one
 //! mesh.
 
 use std::fmt::Write as _;
@@ -110,7 +111,7 @@ const IN_PROCESS: [&str; 5] = ["core", "api", "render", "tinybvh", "array"];
 const FULL: [&str; 4] = ["core", "api", "render", "tinybvh"];
 /// The selections of [`ROWS_ENV`]: a name, its rows.
 const SETS: [(&str, &[&str]); 3] = [
-    ("isa", &["core", "core-avx2", "core-f64", "core-f64-avx2"]),
+    ("isa", &["core", "core-avx2", "core-f64", "core-f64-avx512"]),
     ("render", &["core", "render"]),
     ("threads", &["render", "render-2t", "array", "array-2t", "raycast", "raycast-2t"]),
 ];
@@ -122,6 +123,8 @@ const SCENES_ENV: &str = "WEDGE_VERSUS_SCENES";
 const TWO_THREADS: &str = "-2t";
 /// Suffix of a row with the AVX2 node test (after every other suffix).
 const AVX2: &str = "-avx2";
+/// Suffix of a row with the AVX-512 node test for both precisions (after every other suffix).
+const AVX512: &str = "-avx512";
 /// Suffix of a row with `la` in `f64` (before `-avx2`).
 const F64: &str = "-f64";
 /// The row of the `raycast` binary.
@@ -363,22 +366,30 @@ fn tinybvh(mesh: &Mesh) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// A row's path, thread count and whether it keeps the AVX2 node test: `render-2t` is
-/// `("render", 2, false)`, `core-f64-avx2` is `("core", 1, true)` (and [`precision_of`] F64).
-fn parse_row(row: &str) -> (&str, usize, bool) {
-    let (row, avx2) = row.strip_suffix(AVX2).map_or((row, false), |r| (r, true));
+/// A row's path, thread count and `WEDGE_ISA` (`bvh::ISA_ENV`) value: `render-2t` is
+/// `("render", 2, None)`, `core-f64-avx2` is `("core", 1, Some("avx2"))` (and
+/// [`precision_of`] F64).
+fn parse_row(row: &str) -> (&str, usize, Option<&'static str>) {
+    let (row, isa) = without_isa(row);
     let row = row.strip_suffix(F64).unwrap_or(row);
     let (row, threads) = row.strip_suffix(TWO_THREADS).map_or((row, 1), |r| (r, 2));
-    (row, threads, avx2)
+    (row, threads, isa)
 }
 
-/// The precision of a row: `f64` for a name with [`F64`] before any `-avx2`.
-fn precision_of(row: &str) -> Precision {
-    if row.strip_suffix(AVX2).unwrap_or(row).ends_with(F64) {
-        Precision::F64
+/// `row` without its `-avx2` or `-avx512` suffix, and the `WEDGE_ISA` value it asks for.
+fn without_isa(row: &str) -> (&str, Option<&'static str>) {
+    if let Some(r) = row.strip_suffix(AVX2) {
+        (r, Some("avx2"))
+    } else if let Some(r) = row.strip_suffix(AVX512) {
+        (r, Some("avx512"))
     } else {
-        Precision::F32
+        (row, None)
     }
+}
+
+/// The precision of a row: `f64` for a name with [`F64`] before any `-avx2` or `-avx512`.
+fn precision_of(row: &str) -> Precision {
+    if without_isa(row).0.ends_with(F64) { Precision::F64 } else { Precision::F32 }
 }
 
 /// Child mode: measures `row` on every mesh and prints every series' Mrays/s, then every
@@ -564,8 +575,8 @@ fn run_row(row: &str) -> Result<Vec<f64>, String> {
     let exe = std::env::current_exe().map_err(|e| e.to_string())?;
     let mut command = Command::new(exe);
     command.env(CHILD, row);
-    if parse_row(row).2 {
-        command.env(bvh::ISA_ENV, "avx2");
+    if let Some(isa) = parse_row(row).2 {
+        command.env(bvh::ISA_ENV, isa);
     }
     figures_of(row, &mut command)
 }
@@ -712,14 +723,18 @@ fn print_table(names: &[String], rows: &[Row]) {
     header.push_str(" la/tinybvh | la/Embree | core/api | core/render | core/raycast |");
     println!("{header}");
     println!("|{}", "---|".repeat(3 + names.len() + 5));
-    for r in rows.iter().filter(|r| r.path == "core") {
+    // One line per series of the first row (`core` in a full run).
+    let first = names.first().map_or("core", String::as_str);
+    for r in rows.iter().filter(|r| r.path == first) {
         let mut line = format!("| {} | {} | {} |", r.scene, r.view, r.ray_set);
         for n in names {
             let _ = write!(line, " {} |", cell(figure(n, r), 2));
         }
-        let core = r.median_mrays_per_s;
+        // Over the core loop, where it was measured.
+        let core = figure("core", r);
         for other in ["tinybvh", EMBREE[0], "api", "render", RAYCAST] {
-            let _ = write!(line, " {} |", cell(figure(other, r).map(|x| core / x), 2));
+            let ratio = core.zip(figure(other, r)).map(|(c, x)| c / x);
+            let _ = write!(line, " {} |", cell(ratio, 2));
         }
         println!("{line}");
     }
@@ -727,13 +742,14 @@ fn print_table(names: &[String], rows: &[Row]) {
 
 /// Prints, for each pair of rows that differ by a suffix (`X` and `X-2t`, `X` and `X-avx2`),
 /// the ratio of their medians per mesh, view and ray set: the speed-up of two threads over
-/// one, of the CPU's node test over the AVX2 one.
+/// one, of the default node test over the AVX2 one, of AVX-512 over the default.
 fn print_pairs(names: &[String], rows: &[Row]) {
     let median = |path: &str, r: &Row| median_of(rows, path, r);
     for name in names {
         for (suffix, what, two_over_one) in [
             (TWO_THREADS, "two threads over one", true),
-            (AVX2, "CPU's node test over AVX2", false),
+            (AVX2, "the default node test over AVX2", false),
+            (AVX512, "AVX-512 over the default node test", true),
         ] {
             let Some(base) = name.strip_suffix(suffix) else { continue };
             if !names.iter().any(|n| n == base) {

@@ -40,12 +40,12 @@ pub fn target_features() -> String {
     if names.is_empty() { "none".to_owned() } else { names.join(" ") }
 }
 
-/// The instruction set of the BVH's node test in this process (`bvh::Isa::current`): chosen at
-/// run time from the CPU, so it may be wider than [`target_features`] (`avx512` on an AVX-512
-/// machine with the `avx2` baseline build), or lowered by `WEDGE_ISA=avx2`.
+/// The instruction sets of the BVH's node test in this process, `f32` and `f64` rays
+/// (`bvh::Isa::current`, `current_f64`), e.g. `"f32 avx512, f64 avx2"`: chosen at run time from
+/// the CPU, so they may be wider than [`target_features`], and set by `WEDGE_ISA`.
 #[must_use]
-pub fn node_test() -> &'static str {
-    bvh::Isa::current().name()
+pub fn node_test() -> String {
+    format!("f32 {}, f64 {}", bvh::Isa::current().name(), bvh::Isa::current_f64().name())
 }
 
 #[cfg(test)]
@@ -62,7 +62,7 @@ mod tests {
             assert!(!features.contains("avx2"), "{features}");
         }
         assert!(super::cores() >= 1);
-        assert!(["avx2", "scalar", "avx512"].contains(&super::node_test()));
+        assert!(super::node_test().starts_with("f32 ") && super::node_test().contains(", f64 "));
         assert!(!super::cpu_model().is_empty());
     }
 }

@@ -327,17 +327,23 @@ impl<T: Real> Bvh<T> {
     /// `leaf` gets a range of slots and the current distance limit, which it lowers when it
     /// finds a nearer hit; children entered beyond the limit are skipped from then on (one
     /// entered exactly at the limit is still visited, so ties can be resolved by the caller).
-    /// The node test is [`Isa::current`]'s.
+    /// The node test is [`Isa::current`]'s (`f32`) or [`Isa::current_f64`]'s.
     #[inline]
     pub fn closest<F>(&self, ray: &Ray<T>, t_max: T, leaf: F)
     where
         F: FnMut(Range<usize>, &mut T),
     {
-        // SAFETY: `Isa::current` is `Avx512` only on a CPU that has it.
-        unsafe { self.closest_unchecked(Isa::current(), ray, t_max, leaf) }
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.closest_unchecked(Self::isa(), ray, t_max, leaf) }
     }
 
-    /// [`Bvh::closest`] with the node test of `isa` instead of [`Isa::current`]'s (the same
+    /// The node test of this precision in this process.
+    #[inline(always)]
+    fn isa() -> Isa {
+        if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS { Isa::current() } else { Isa::current_f64() }
+    }
+
+    /// [`Bvh::closest`] with the node test of `isa` instead of this process's (the same
     /// leaves in the same order, the same limits: for tests and benches that pair the
     /// instruction sets in one process). An `isa` the CPU lacks runs the baseline.
     #[inline]
@@ -381,14 +387,14 @@ impl<T: Real> Bvh<T> {
     }
 
     /// Visits the leaves that `ray` may reach within `(0, t_max]` until `leaf` returns `true`;
-    /// returns whether it did. The node test is [`Isa::current`]'s.
+    /// returns whether it did. The node test is that of [`Bvh::closest`].
     #[inline]
     pub fn any<F>(&self, ray: &Ray<T>, t_max: T, leaf: F) -> bool
     where
         F: FnMut(Range<usize>) -> bool,
     {
-        // SAFETY: `Isa::current` is `Avx512` only on a CPU that has it.
-        unsafe { self.any_unchecked(Isa::current(), ray, t_max, leaf) }
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.any_unchecked(Self::isa(), ray, t_max, leaf) }
     }
 
     /// [`Bvh::any`] with the node test of `isa` (see [`Bvh::closest_with`]).

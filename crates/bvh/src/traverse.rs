@@ -9,10 +9,11 @@
 //!
 //! With AVX-512 (chosen at run time, see [`Isa`](crate::simd::Isa)) the whole loop is compiled
 //! a second time inside a function that enables it ([`closest_avx512`], [`any_avx512`]), so
-//! that the wider node test ([`Avx512`]) inlines into it: `f64` rays convert and test the
-//! eight boxes in one 8-lane register instead of two 4-lane halves, and both precisions
-//! compare straight into a mask register. The operations and their order are those of the
-//! AVX2 test, so the entry distances and masks are the same bits.
+//! that the node test ([`Avx512`]) and everything else the loop inlines use the wider
+//! instruction set: the compares go straight into a mask register. The operations and their
+//! order are those of the AVX2 test, so the entry distances and masks are the same bits.
+//! (`f64` boxes can also be tested in one 8-lane register, `avx512::hits_f64_zmm`, and are
+//! not: see `results/README.md`.)
 
 use core::mem::MaybeUninit;
 use core::ops::{Mul, Range, Sub};
@@ -313,8 +314,8 @@ mod avx2 {
 #[cfg(target_arch = "x86_64")]
 mod avx512 {
     //! The box tests with AVX-512: the AVX2 tests' operations in the same order (so the same
-    //! NaN handling: `max`/`min` return their second operand when either is NaN), `f64` in one
-    //! 8-lane register, the compare into a mask register.
+    //! NaN handling: `max`/`min` return their second operand when either is NaN), the compare
+    //! into a mask register.
 
     use core::arch::x86_64::*;
 
@@ -373,9 +374,8 @@ mod avx512 {
         mask
     }
 
-    /// The `f64` test in one 8-lane register. Measured slower than the halves on this
-    /// machine (`results/README.md`, "AVX-512"), kept beside them for the tests and for
-    /// measuring it again.
+    /// The `f64` test in one 8-lane register. Measured slower than the halves on the machine
+    /// of `results/README.md` ("AVX-512"), kept beside them, tested, for measuring again.
     #[cfg_attr(not(test), expect(dead_code, reason = "measured slower; tested, not traced"))]
     #[inline]
     #[target_feature(enable = "avx512f,avx512vl")]
