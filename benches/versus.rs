@@ -22,7 +22,7 @@
 //! - `api`: the library API as a caller uses it: the same queries, every hit kept in a `Vec`.
 //! - `render`: `render::trace::render_frame`, the loop of `raytrace`, in `depth` mode (closest)
 //!   or `alpha` mode (any) on a rayon pool of one thread, on the same camera and image size:
-//!   the same rays, made per pixel and traced in 16 x 16 tiles. Primary rays only.
+//!   the same rays, made a tile's row at a time and traced in 16 x 16 tiles. Primary rays only.
 //! - `raycast`: the release binary `raycast --threads 1 --stats` on the same rays as `.npy`
 //!   (`f64`, rounded to `f32` inside), its `mrays_per_s` (trace phase only: the load, build and
 //!   write phases are left out). One trace per process, after the build. Left out with a note
