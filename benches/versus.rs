@@ -22,7 +22,7 @@
 //! - `api`: the library API as a caller uses it: the same queries, every hit kept in a `Vec`.
 //! - `render`: `render::trace::render_frame`, the loop of `raytrace`, in `depth` mode (closest)
 //!   or `alpha` mode (any) on a rayon pool of one thread, on the same camera and image size:
-//!   the same rays, made per pixel and traced in 16 x 16 tiles. Primary rays only.
+//!   the same rays, made a tile's row at a time and traced in 16 x 16 tiles. Primary rays only.
 //! - `raycast`: the release binary `raycast --threads 1 --stats` on the same rays as `.npy`
 //!   (`f64`, rounded to `f32` inside), its `mrays_per_s` (trace phase only: the load, build and
 //!   write phases are left out). One trace per process, after the build. Left out with a note
@@ -49,6 +49,25 @@
 //! Run: `cargo build --release -p raytrace && cargo bench -p wedge-benches --bench versus`
 //! (about 15 minutes). With `WEDGE_BENCH_QUICK=1`: one round on the bunny and the bunny split
 //! once, 64 x 64 primary and 4,096 incoherent rays, written to the criterion directory.
+//!
+//! **Selections** (`WEDGE_VERSUS_ROWS`), for the measurements of issue 18 that need only some
+//! rows; each writes `results/versus-<set>.csv` (a list of rows instead of a set's name writes
+//! `versus.partial.csv` in the criterion directory):
+//!
+//! - `isa`: `core` and `core-avx2`, the core loop with the default node test (AVX-512 for
+//!   `f32` where the CPU has it) and with the AVX2 baseline (`WEDGE_ISA=avx2` in the child, see
+//!   `bvh::Isa`), and in `f64` with the default (AVX2) and with AVX-512 (`core-f64`,
+//!   `core-f64-avx512`, `WEDGE_ISA=avx512`);
+//! - `render`: `core` and `render` (the render path within 5% of the core loop);
+//! - `threads`: one against two threads of `render_frame` (`render`, `render-2t`), of the
+//!   array path (`array`, `array-2t`: the throughput bench's `trace_parallel`, 2048 rays per
+//!   task, on a pool of one or two threads) and of `raycast` (`raycast`, `raycast-2t`).
+//!
+//! A row name ending in `-2t` runs on two threads, in `-f64` in `f64`, in `-avx2` or
+//! `-avx512` with that node test (suffixes in that order). The table printed at the end adds,
+//! per pair, the ratio of the two (`-2t` over one thread, the default node test over `-avx2`,
+//! `-avx512` over the default). `WEDGE_VERSUS_SCENES=bunny` (or `bunny-sub2`) keeps one
+//! mesh.
 
 use std::fmt::Write as _;
 use std::fs::File;
@@ -68,12 +87,12 @@ use render::trace::render_frame;
 use scene::Mesh;
 use serde::Serialize;
 use wedge_benches::alternate::{
-    EMBREE_SCRIPT, alternate, embree_available, embree_net, figures_of, python, run_self, summary,
+    EMBREE_SCRIPT, alternate, embree_available, embree_net, figures_of, python, summary,
     write_rays, write_triangles,
 };
 use wedge_benches::throughput::rays::{INCOHERENT_SEED, Query, camera_rays, incoherent_rays};
 use wedge_benches::throughput::scenes::{bunny, subdivided};
-use wedge_benches::throughput::trace::trace;
+use wedge_benches::throughput::trace::{trace, trace_parallel};
 use wedge_benches::{criterion_dir, machine, quick_mode, results_dir, write_csv};
 
 /// Rounds of a full run.
@@ -86,8 +105,28 @@ const CHILD: &str = "WEDGE_VERSUS_CHILD";
 const FILL: f64 = 0.7;
 /// The `small` view's distance, as a multiple of `Camera::auto`'s.
 const SMALL: f64 = 3.0;
-/// The rows measured in processes of this bench.
-const IN_PROCESS: [&str; 4] = ["core", "api", "render", "tinybvh"];
+/// The rows measured in processes of this bench (and their `-2t` and `-avx2` forms).
+const IN_PROCESS: [&str; 5] = ["core", "api", "render", "tinybvh", "array"];
+/// The rows of a full run, in order.
+const FULL: [&str; 4] = ["core", "api", "render", "tinybvh"];
+/// The selections of [`ROWS_ENV`]: a name, its rows.
+const SETS: [(&str, &[&str]); 3] = [
+    ("isa", &["core", "core-avx2", "core-f64", "core-f64-avx512"]),
+    ("render", &["core", "render"]),
+    ("threads", &["render", "render-2t", "array", "array-2t", "raycast", "raycast-2t"]),
+];
+/// Selects rows (see the module documentation).
+const ROWS_ENV: &str = "WEDGE_VERSUS_ROWS";
+/// Keeps one mesh.
+const SCENES_ENV: &str = "WEDGE_VERSUS_SCENES";
+/// Suffix of a row on two threads.
+const TWO_THREADS: &str = "-2t";
+/// Suffix of a row with the AVX2 node test (after every other suffix).
+const AVX2: &str = "-avx2";
+/// Suffix of a row with the AVX-512 node test for both precisions (after every other suffix).
+const AVX512: &str = "-avx512";
+/// Suffix of a row with `la` in `f64` (before `-avx2`).
+const F64: &str = "-f64";
 /// The row of the `raycast` binary.
 const RAYCAST: &str = "raycast";
 /// The Embree rows: as measured, and with the binding's cost taken off.
@@ -181,12 +220,17 @@ fn sizes() -> (u32, usize) {
 /// The meshes, with their names in the CSV.
 fn meshes() -> Vec<(&'static str, Mesh)> {
     let bunny = bunny();
-    let big = if quick_mode() {
-        ("bunny-sub1", subdivided(&bunny, 1))
-    } else {
-        ("bunny-sub2", subdivided(&bunny, 2))
-    };
-    vec![("bunny", bunny), big]
+    let only = std::env::var(SCENES_ENV).ok();
+    let keep = |name: &str| only.as_deref().is_none_or(|o| o == name);
+    let (big, splits) = if quick_mode() { ("bunny-sub1", 1) } else { ("bunny-sub2", 2) };
+    let mut out = Vec::new();
+    if keep(big) {
+        out.push((big, subdivided(&bunny, splits)));
+    }
+    if keep("bunny") {
+        out.insert(0, ("bunny", bunny));
+    }
+    out
 }
 
 /// The rays of `series` on `mesh`, in `f64`.
@@ -214,6 +258,8 @@ fn best_of(n: usize, mut f: impl FnMut() -> u64) -> (f64, u64) {
 struct LaPath<'a> {
     path: &'a str,
     mesh: &'a Mesh,
+    /// The pool the child runs on (one or two threads), for the `array` path.
+    pool: &'a rayon::ThreadPool,
 }
 
 impl Job for LaPath<'_> {
@@ -231,6 +277,9 @@ impl Job for LaPath<'_> {
                 let n = rays.len();
                 let (mrays, hits) = match (self.path, series.query) {
                     ("core", q) => best_of(n, || trace(&accel, black_box(&rays), q).hits),
+                    ("array", q) => {
+                        best_of(n, || trace_parallel(self.pool, &accel, black_box(&rays), q).hits)
+                    }
                     ("api", Query::Closest) => best_of(n, || {
                         let hits: Vec<_> = rays.iter().map(|r| accel.closest_hit(r)).collect();
                         hits.iter().filter(|h| h.is_some()).count() as u64
@@ -317,20 +366,49 @@ fn tinybvh(mesh: &Mesh) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// Child mode: measures `path` on every mesh and prints every series' Mrays/s, then every
-/// series' hits.
-fn child(path: &str) -> Result<(), String> {
-    if !IN_PROCESS.contains(&path) {
-        return Err(format!("unknown path {path}"));
+/// A row's path, thread count and `WEDGE_ISA` (`bvh::ISA_ENV`) value: `render-2t` is
+/// `("render", 2, None)`, `core-f64-avx2` is `("core", 1, Some("avx2"))` (and
+/// [`precision_of`] F64).
+fn parse_row(row: &str) -> (&str, usize, Option<&'static str>) {
+    let (row, isa) = without_isa(row);
+    let row = row.strip_suffix(F64).unwrap_or(row);
+    let (row, threads) = row.strip_suffix(TWO_THREADS).map_or((row, 1), |r| (r, 2));
+    (row, threads, isa)
+}
+
+/// `row` without its `-avx2` or `-avx512` suffix, and the `WEDGE_ISA` value it asks for.
+fn without_isa(row: &str) -> (&str, Option<&'static str>) {
+    if let Some(r) = row.strip_suffix(AVX2) {
+        (r, Some("avx2"))
+    } else if let Some(r) = row.strip_suffix(AVX512) {
+        (r, Some("avx512"))
+    } else {
+        (row, None)
     }
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().map_err(|e| e.to_string())?;
+}
+
+/// The precision of a row: `f64` for a name with [`F64`] before any `-avx2` or `-avx512`.
+fn precision_of(row: &str) -> Precision {
+    if without_isa(row).0.ends_with(F64) { Precision::F64 } else { Precision::F32 }
+}
+
+/// Child mode: measures `row` on every mesh and prints every series' Mrays/s, then every
+/// series' hits.
+fn child(row: &str) -> Result<(), String> {
+    let (path, threads, _) = parse_row(row);
+    if !IN_PROCESS.contains(&path) || (path == "tinybvh" && row != path) {
+        return Err(format!("unknown path {row}"));
+    }
+    let pool =
+        rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| e.to_string())?;
     let mut figures = Vec::new();
     for (_, mesh) in meshes() {
         figures.extend(if path == "tinybvh" {
             tinybvh(&mesh)
         } else {
             pool.install(|| {
-                dispatch(Backend::BASELINE, Precision::F32, LaPath { path, mesh: &mesh })
+                let job = LaPath { path, mesh: &mesh, pool: &pool };
+                dispatch(Backend::BASELINE, precision_of(row), job)
             })
         });
     }
@@ -409,7 +487,7 @@ fn raycast_binary() -> Option<PathBuf> {
 
 /// Runs `raycast` once per series of every mesh: per series Mrays/s of its trace phase, then
 /// NaN hits (it writes its hits, which are not counted here).
-fn run_raycast(binary: &Path, inputs: &Inputs) -> Result<Vec<f64>, String> {
+fn run_raycast(binary: &Path, inputs: &Inputs, threads: usize) -> Result<Vec<f64>, String> {
     let mut mrays = Vec::new();
     let stats = inputs.dir.join("raycast-stats.json");
     let hits = inputs.dir.join("raycast-hits.npy");
@@ -417,7 +495,8 @@ fn run_raycast(binary: &Path, inputs: &Inputs) -> Result<Vec<f64>, String> {
         for series in Series::all() {
             let rays = inputs.dir.join(series.rays_stem(name)).with_extension("npy");
             let mut command = Command::new(binary);
-            command.arg(obj).arg(&rays).arg(&hits).args(["--threads", "1", "--quiet", "--stats"]);
+            command.arg(obj).arg(&rays).arg(&hits).arg("--threads").arg(threads.to_string());
+            command.args(["--quiet", "--stats"]);
             command.arg(&stats);
             if series.query == Query::Any {
                 command.arg("--any-hit");
@@ -475,31 +554,74 @@ struct Row {
     cpu: String,
 }
 
+/// The rows [`ROWS_ENV`] selects (`None` for a full run) and the file stem of the results.
+fn selection() -> Result<Option<(Vec<String>, String)>, String> {
+    let Ok(value) = std::env::var(ROWS_ENV) else { return Ok(None) };
+    if let Some((set, rows)) = SETS.iter().find(|(set, _)| *set == value) {
+        return Ok(Some((rows.iter().map(|r| (*r).to_owned()).collect(), format!("versus-{set}"))));
+    }
+    let rows: Vec<String> = value.split(',').map(|r| r.trim().to_owned()).collect();
+    for row in &rows {
+        let (path, _, _) = parse_row(row);
+        if !(IN_PROCESS.contains(&path) || path == RAYCAST || row == EMBREE[0]) {
+            return Err(format!("{ROWS_ENV}: unknown row {row}"));
+        }
+    }
+    Ok(Some((rows, "versus.partial".to_owned())))
+}
+
+/// This bench's binary as the child measuring `row`, with the AVX2 node test for a `-avx2` row.
+fn run_row(row: &str) -> Result<Vec<f64>, String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let mut command = Command::new(exe);
+    command.env(CHILD, row);
+    if let Some(isa) = parse_row(row).2 {
+        command.env(bvh::ISA_ENV, isa);
+    }
+    figures_of(row, &mut command)
+}
+
 fn parent() -> Result<(), String> {
     let quick = quick_mode();
     let rounds = if quick { 1 } else { ROUNDS };
-    let mut names: Vec<String> = IN_PROCESS.map(String::from).to_vec();
+    let selected = selection()?;
+    let mut names: Vec<String> = match &selected {
+        Some((rows, _)) => rows.clone(),
+        None => FULL.map(String::from).to_vec(),
+    };
     let raycast = raycast_binary();
     match &raycast {
-        Some(_) => names.push(RAYCAST.to_owned()),
-        None => eprintln!(
-            "note: no raycast rows (target/release/raycast is not built: \
-             `cargo build --release -p raytrace`)"
-        ),
+        Some(_) if selected.is_none() => names.push(RAYCAST.to_owned()),
+        Some(_) => {}
+        None => {
+            eprintln!(
+                "note: no raycast rows (target/release/raycast is not built: \
+                 `cargo build --release -p raytrace`)"
+            );
+            names.retain(|n| parse_row(n).0 != RAYCAST);
+        }
     }
-    let embree = embree_available();
-    if embree {
-        names.push(EMBREE[0].to_owned());
-    } else {
-        eprintln!("note: no Embree reference rows (`{} -c \"import embreex\"` failed)", python());
+    if selected.is_none() {
+        if embree_available() {
+            names.push(EMBREE[0].to_owned());
+        } else {
+            eprintln!(
+                "note: no Embree reference rows (`{} -c \"import embreex\"` failed)",
+                python()
+            );
+        }
     }
+    let embree = names.iter().any(|n| n == EMBREE[0]);
+    let wants_raycast = names.iter().any(|n| parse_row(n).0 == RAYCAST);
     let dir = criterion_dir().join("versus-input");
-    let inputs = write_inputs(&dir, raycast.is_some(), embree)
-        .map_err(|e| format!("{}: {e}", dir.display()))?;
-    let mut figures = alternate(&names, rounds, |i| match names[i].as_str() {
-        RAYCAST => run_raycast(raycast.as_deref().expect("listed when built"), &inputs),
-        n if n == EMBREE[0] => run_embree(&inputs),
-        n => run_self(CHILD, n),
+    let inputs =
+        write_inputs(&dir, wants_raycast, embree).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let mut figures = alternate(&names, rounds, |i| match parse_row(&names[i]) {
+        (RAYCAST, threads, _) => {
+            run_raycast(raycast.as_deref().expect("listed when built"), &inputs, threads)
+        }
+        _ if names[i] == EMBREE[0] => run_embree(&inputs),
+        _ => run_row(&names[i]),
     })?;
     if embree {
         let (raw, net) = embree_net(&figures[names.len() - 1]);
@@ -511,8 +633,12 @@ fn parent() -> Result<(), String> {
     // round: the first round's).
     let series = Series::all();
     let count = inputs.scenes.len() * series.len();
-    let core: Vec<f64> =
-        figures[0][..count].iter().map(|v| summary(v).map_or(f64::NAN, |s| s.0)).collect();
+    let core: Vec<f64> = match names.iter().position(|n| n == "core") {
+        Some(c) => {
+            figures[c][..count].iter().map(|v| summary(v).map_or(f64::NAN, |s| s.0)).collect()
+        }
+        None => vec![f64::NAN; count],
+    };
     let (side, incoherent) = sizes();
     let cpu = machine();
     let mut rows = Vec::new();
@@ -541,7 +667,15 @@ fn parent() -> Result<(), String> {
     }
     check_hits(&rows)?;
     print_table(&names, &rows);
-    let out = if quick { criterion_dir() } else { results_dir() }.join("versus.csv");
+    print_pairs(&names, &rows);
+    let out = match &selected {
+        _ if quick => criterion_dir().join("versus.csv"),
+        Some((_, stem)) if stem.ends_with(".partial") => {
+            criterion_dir().join(format!("{stem}.csv"))
+        }
+        Some((_, stem)) => results_dir().join(format!("{stem}.csv")),
+        None => results_dir().join("versus.csv"),
+    };
     write_csv(&out, &rows).map_err(|e| format!("{}: {e}", out.display()))?;
     println!("wrote {}", out.display());
     Ok(())
@@ -567,16 +701,19 @@ fn check_hits(rows: &[Row]) -> Result<(), String> {
     Ok(())
 }
 
+/// The median Mrays/s of row `path` on `r`'s mesh, view and ray set, if measured.
+fn median_of(rows: &[Row], path: &str, r: &Row) -> Option<f64> {
+    rows.iter()
+        .find(|x| {
+            x.path == path && x.scene == r.scene && x.view == r.view && x.ray_set == r.ray_set
+        })
+        .map(|x| x.median_mrays_per_s)
+}
+
 /// Prints the issue's table in Markdown: per mesh, view and ray set, every row's median
 /// Mrays/s, then `la`/tinybvh, `la`/Embree (warm, as measured) and each path over the core.
 fn print_table(names: &[String], rows: &[Row]) {
-    let figure = |path: &str, r: &Row| {
-        rows.iter()
-            .find(|x| {
-                x.path == path && x.scene == r.scene && x.view == r.view && x.ray_set == r.ray_set
-            })
-            .map(|x| x.median_mrays_per_s)
-    };
+    let figure = |path: &str, r: &Row| median_of(rows, path, r);
     let cell =
         |x: Option<f64>, digits: usize| x.map_or("-".to_owned(), |x| format!("{x:.digits$}"));
     let mut header = "| mesh | view | rays |".to_owned();
@@ -586,16 +723,52 @@ fn print_table(names: &[String], rows: &[Row]) {
     header.push_str(" la/tinybvh | la/Embree | core/api | core/render | core/raycast |");
     println!("{header}");
     println!("|{}", "---|".repeat(3 + names.len() + 5));
-    for r in rows.iter().filter(|r| r.path == "core") {
+    // One line per series of the first row (`core` in a full run).
+    let first = names.first().map_or("core", String::as_str);
+    for r in rows.iter().filter(|r| r.path == first) {
         let mut line = format!("| {} | {} | {} |", r.scene, r.view, r.ray_set);
         for n in names {
             let _ = write!(line, " {} |", cell(figure(n, r), 2));
         }
-        let core = r.median_mrays_per_s;
+        // Over the core loop, where it was measured.
+        let core = figure("core", r);
         for other in ["tinybvh", EMBREE[0], "api", "render", RAYCAST] {
-            let _ = write!(line, " {} |", cell(figure(other, r).map(|x| core / x), 2));
+            let ratio = core.zip(figure(other, r)).map(|(c, x)| c / x);
+            let _ = write!(line, " {} |", cell(ratio, 2));
         }
         println!("{line}");
+    }
+}
+
+/// Prints, for each pair of rows that differ by a suffix (`X` and `X-2t`, `X` and `X-avx2`),
+/// the ratio of their medians per mesh, view and ray set: the speed-up of two threads over
+/// one, of the default node test over the AVX2 one, of AVX-512 over the default.
+fn print_pairs(names: &[String], rows: &[Row]) {
+    let median = |path: &str, r: &Row| median_of(rows, path, r);
+    for name in names {
+        for (suffix, what, two_over_one) in [
+            (TWO_THREADS, "two threads over one", true),
+            (AVX2, "the default node test over AVX2", false),
+            (AVX512, "AVX-512 over the default node test", true),
+        ] {
+            let Some(base) = name.strip_suffix(suffix) else { continue };
+            if !names.iter().any(|n| n == base) {
+                continue;
+            }
+            println!(
+                "\n{base} vs {name}: {what}\n\n| mesh | view | rays | ratio |\n|---|---|---|---|"
+            );
+            for r in rows.iter().filter(|r| r.path == *base) {
+                if let Some(other) = median(name, r) {
+                    let ratio = if two_over_one {
+                        other / r.median_mrays_per_s
+                    } else {
+                        r.median_mrays_per_s / other
+                    };
+                    println!("| {} | {} | {} | {ratio:.3} |", r.scene, r.view, r.ray_set);
+                }
+            }
+        }
     }
 }
 

@@ -155,14 +155,15 @@ pub fn median(values: &mut [f64]) -> f64 {
     values[values.len() / 2]
 }
 
-pub use backends::machine::{cpu_model, target_features};
+pub use backends::machine::{cpu_model, node_test, target_features};
 
 /// The machine description the benches write into their results: the CPU model and, in
-/// brackets, the target features the build used ([`target_features`]), so that a figure
-/// measured with `-C target-cpu=native` is told apart from one of the stated baseline.
+/// brackets, the target features the build used ([`target_features`]) and the BVH's node test
+/// chosen at run time ([`node_test`]), so that a figure measured with `-C target-cpu=native`
+/// or with AVX-512 is told apart from one of the stated baseline.
 #[must_use]
 pub fn machine() -> String {
-    format!("{} [{}]", cpu_model(), target_features())
+    format!("{} [{}; node test {}]", cpu_model(), target_features(), node_test())
 }
 
 /// What a GA operation is held to.

@@ -40,6 +40,14 @@ pub fn target_features() -> String {
     if names.is_empty() { "none".to_owned() } else { names.join(" ") }
 }
 
+/// The instruction sets of the BVH's node test in this process, `f32` and `f64` rays
+/// (`bvh::Isa::current`, `current_f64`), e.g. `"f32 avx512, f64 avx2"`: chosen at run time from
+/// the CPU, so they may be wider than [`target_features`], and set by `WEDGE_ISA`.
+#[must_use]
+pub fn node_test() -> String {
+    format!("f32 {}, f64 {}", bvh::Isa::current().name(), bvh::Isa::current_f64().name())
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -54,6 +62,7 @@ mod tests {
             assert!(!features.contains("avx2"), "{features}");
         }
         assert!(super::cores() >= 1);
+        assert!(super::node_test().starts_with("f32 ") && super::node_test().contains(", f64 "));
         assert!(!super::cpu_model().is_empty());
     }
 }

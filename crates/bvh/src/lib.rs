@@ -117,9 +117,11 @@ use rayon::prelude::*;
 
 pub use aabb::Aabb;
 pub use node::{MAX_SLOTS, WIDTH};
+pub use simd::{ISA_ENV, Isa};
 
 use build::{Info, PARALLEL_MIN, PrimRef};
 use node::{Node, is_leaf, leaf_slots};
+use traverse::Baseline;
 
 /// Largest number of bins per axis in the SAH build (sets of at least 4096 primitives; 16
 /// bins from 256, 8 below, at most one per primitive).
@@ -325,30 +327,112 @@ impl<T: Real> Bvh<T> {
     /// `leaf` gets a range of slots and the current distance limit, which it lowers when it
     /// finds a nearer hit; children entered beyond the limit are skipped from then on (one
     /// entered exactly at the limit is still visited, so ties can be resolved by the caller).
+    /// The node test is [`Isa::current`]'s (`f32`) or [`Isa::current_f64`]'s.
     #[inline]
     pub fn closest<F>(&self, ray: &Ray<T>, t_max: T, leaf: F)
     where
         F: FnMut(Range<usize>, &mut T),
     {
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.closest_unchecked(Self::isa(), ray, t_max, leaf) }
+    }
+
+    /// The node test of this precision in this process.
+    #[inline(always)]
+    fn isa() -> Isa {
+        if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS { Isa::current() } else { Isa::current_f64() }
+    }
+
+    /// [`Bvh::closest`] with the node test of `isa` instead of this process's (the same
+    /// leaves in the same order, the same limits: for tests and benches that pair the
+    /// instruction sets in one process). An `isa` the CPU lacks runs the baseline.
+    #[inline]
+    pub fn closest_with<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F)
+    where
+        F: FnMut(Range<usize>, &mut T),
+    {
+        let isa = if isa == Isa::detected() { isa } else { Isa::Baseline };
+        // SAFETY: `isa` is `Avx512` only if the CPU has it.
+        unsafe { self.closest_unchecked(isa, ray, t_max, leaf) }
+    }
+
+    /// # Safety
+    ///
+    /// `isa` is [`Isa::Avx512`] only on a CPU with AVX-512F and VL.
+    #[inline(always)]
+    unsafe fn closest_unchecked<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F)
+    where
+        F: FnMut(Range<usize>, &mut T),
+    {
+        #[cfg(target_arch = "x86_64")]
+        if isa == Isa::Avx512 {
+            // SAFETY: the caller guarantees AVX-512F and VL.
+            unsafe {
+                let test = traverse::Avx512::assume();
+                if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
+                    traverse::closest_avx512::<f32, T, F>(test, &self.nodes, ray, t_max, leaf);
+                } else {
+                    traverse::closest_avx512::<f64, T, F>(test, &self.nodes, ray, t_max, leaf);
+                }
+            }
+            return;
+        }
+        let _ = isa;
         // The branch is on a constant: each precision keeps only its own traversal.
         if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
-            traverse::closest::<f32, T, F>(&self.nodes, ray, t_max, leaf);
+            traverse::closest::<f32, T, F>(Baseline, &self.nodes, ray, t_max, leaf);
         } else {
-            traverse::closest::<f64, T, F>(&self.nodes, ray, t_max, leaf);
+            traverse::closest::<f64, T, F>(Baseline, &self.nodes, ray, t_max, leaf);
         }
     }
 
     /// Visits the leaves that `ray` may reach within `(0, t_max]` until `leaf` returns `true`;
-    /// returns whether it did.
+    /// returns whether it did. The node test is that of [`Bvh::closest`].
     #[inline]
     pub fn any<F>(&self, ray: &Ray<T>, t_max: T, leaf: F) -> bool
     where
         F: FnMut(Range<usize>) -> bool,
     {
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.any_unchecked(Self::isa(), ray, t_max, leaf) }
+    }
+
+    /// [`Bvh::any`] with the node test of `isa` (see [`Bvh::closest_with`]).
+    #[inline]
+    pub fn any_with<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F) -> bool
+    where
+        F: FnMut(Range<usize>) -> bool,
+    {
+        let isa = if isa == Isa::detected() { isa } else { Isa::Baseline };
+        // SAFETY: `isa` is `Avx512` only if the CPU has it.
+        unsafe { self.any_unchecked(isa, ray, t_max, leaf) }
+    }
+
+    /// # Safety
+    ///
+    /// `isa` is [`Isa::Avx512`] only on a CPU with AVX-512F and VL.
+    #[inline(always)]
+    unsafe fn any_unchecked<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F) -> bool
+    where
+        F: FnMut(Range<usize>) -> bool,
+    {
+        #[cfg(target_arch = "x86_64")]
+        if isa == Isa::Avx512 {
+            // SAFETY: the caller guarantees AVX-512F and VL.
+            return unsafe {
+                let test = traverse::Avx512::assume();
+                if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
+                    traverse::any_avx512::<f32, T, F>(test, &self.nodes, ray, t_max, leaf)
+                } else {
+                    traverse::any_avx512::<f64, T, F>(test, &self.nodes, ray, t_max, leaf)
+                }
+            };
+        }
+        let _ = isa;
         if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
-            traverse::any::<f32, T, F>(&self.nodes, ray, t_max, leaf)
+            traverse::any::<f32, T, F>(Baseline, &self.nodes, ray, t_max, leaf)
         } else {
-            traverse::any::<f64, T, F>(&self.nodes, ray, t_max, leaf)
+            traverse::any::<f64, T, F>(Baseline, &self.nodes, ray, t_max, leaf)
         }
     }
 }

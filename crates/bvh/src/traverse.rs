@@ -6,6 +6,14 @@
 //! x86-64 baseline, `-C target-cpu=x86-64-v3`, enables it) eight boxes take twelve vector
 //! subtractions and multiplications, six minima and maxima and one compare; without, the same
 //! arithmetic runs lane by lane.
+//!
+//! With AVX-512 (chosen at run time, see [`Isa`](crate::simd::Isa)) the whole loop is compiled
+//! a second time inside a function that enables it ([`closest_avx512`], [`any_avx512`]), so
+//! that the node test ([`Avx512`]) and everything else the loop inlines use the wider
+//! instruction set: the compares go straight into a mask register. The operations and their
+//! order are those of the AVX2 test, so the entry distances and masks are the same bits.
+//! (`f64` boxes can also be tested in one 8-lane register, `avx512::hits_f64_zmm`, and are
+//! not: see `results/README.md`.)
 
 use core::mem::MaybeUninit;
 use core::ops::{Mul, Range, Sub};
@@ -41,6 +49,62 @@ pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
     /// The lanes of `node` whose box `ray` meets within `(0, limit]` (bit `i` for lane `i`),
     /// conservatively, and their entry distances in `t`.
     fn hits(node: &Node, ray: &Prepared<Self>, limit: Self, t: &mut [Self; WIDTH]) -> u32;
+    /// [`Lane::hits`] with AVX-512, the same bits.
+    ///
+    /// # Safety
+    ///
+    /// The CPU must have AVX-512F and AVX-512VL.
+    #[cfg(target_arch = "x86_64")]
+    unsafe fn hits_avx512(
+        node: &Node,
+        ray: &Prepared<Self>,
+        limit: Self,
+        t: &mut [Self; WIDTH],
+    ) -> u32;
+}
+
+/// A node test: the instruction set the traversal loop is compiled for.
+pub trait NodeTest: Copy {
+    /// [`Lane::hits`] in this instruction set.
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32;
+}
+
+/// The build's own node test ([`Lane::hits`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Baseline;
+
+impl NodeTest for Baseline {
+    #[inline(always)]
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32 {
+        S::hits(node, ray, limit, t)
+    }
+}
+
+/// The AVX-512 node test; a value exists only on a CPU that has AVX-512F and VL.
+#[cfg(target_arch = "x86_64")]
+#[derive(Clone, Copy, Debug)]
+pub struct Avx512(());
+
+#[cfg(target_arch = "x86_64")]
+impl Avx512 {
+    /// The test, which the caller knows the CPU runs.
+    ///
+    /// # Safety
+    ///
+    /// The CPU must have AVX-512F and AVX-512VL.
+    #[inline(always)]
+    pub unsafe fn assume() -> Self {
+        Self(())
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+impl NodeTest for Avx512 {
+    #[inline(always)]
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32 {
+        // SAFETY: an `Avx512` is made only by `Avx512::assume`, on a CPU with AVX-512F and VL.
+        unsafe { S::hits_avx512(node, ray, limit, t) }
+    }
 }
 
 /// A ray prepared for box tests in precision `S`.
@@ -125,6 +189,17 @@ impl Lane for f32 {
             ray.hits_scalar(node, limit, t)
         }
     }
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn hits_avx512(
+        node: &Node,
+        ray: &Prepared<f32>,
+        limit: f32,
+        t: &mut [f32; WIDTH],
+    ) -> u32 {
+        // SAFETY: the caller guarantees AVX-512F and VL.
+        unsafe { avx512::hits_f32(node, ray, limit, t) }
+    }
 }
 
 impl Lane for f64 {
@@ -148,6 +223,17 @@ impl Lane for f64 {
         {
             ray.hits_scalar(node, limit, t)
         }
+    }
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn hits_avx512(
+        node: &Node,
+        ray: &Prepared<f64>,
+        limit: f64,
+        t: &mut [f64; WIDTH],
+    ) -> u32 {
+        // SAFETY: the caller guarantees AVX-512F and VL.
+        unsafe { avx512::hits_f64(node, ray, limit, t) }
     }
 }
 
@@ -225,6 +311,97 @@ mod avx2 {
     }
 }
 
+#[cfg(target_arch = "x86_64")]
+mod avx512 {
+    //! The box tests with AVX-512: the AVX2 tests' operations in the same order (so the same
+    //! NaN handling: `max`/`min` return their second operand when either is NaN), the compare
+    //! into a mask register.
+
+    use core::arch::x86_64::*;
+
+    use super::{Lane, Node, Prepared, WIDTH};
+
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512vl")]
+    pub fn hits_f32(node: &Node, r: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+        // SAFETY: a row is 8 f32, 32-byte aligned (`Node` is, and rows are 32 bytes).
+        let plane = |row: usize| unsafe { _mm256_load_ps(node.planes[row].as_ptr()) };
+        let mut near = _mm256_setzero_ps();
+        let mut far = _mm256_set1_ps(limit);
+        for k in 0..3 {
+            let o = _mm256_set1_ps(r.origin[k]);
+            let inv = _mm256_set1_ps(r.inv_dir[k]);
+            let tn = _mm256_mul_ps(_mm256_sub_ps(plane(r.near[k]), o), inv);
+            let tf = _mm256_mul_ps(_mm256_sub_ps(plane(r.far[k]), o), inv);
+            near = _mm256_max_ps(tn, near);
+            far = _mm256_min_ps(tf, far);
+        }
+        let far = _mm256_mul_ps(far, _mm256_set1_ps(f32::SLACK));
+        let inside = _mm256_cmp_ps_mask::<_CMP_LE_OQ>(near, far);
+        // SAFETY: `t` holds the 8 f32 of the unaligned store.
+        unsafe { _mm256_storeu_ps(t.as_mut_ptr(), near) };
+        u32::from(inside)
+    }
+
+    /// The `f64` test in two 4-lane halves, as AVX2's, with the compare into a mask register
+    /// (the kept form: see [`hits_f64_zmm`]).
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512vl")]
+    pub fn hits_f64(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+        let mut mask = 0;
+        for h in 0..2 {
+            let half = |row: usize| {
+                // SAFETY: 4 of the row's 8 f32, 16-byte aligned (rows are 32-byte aligned).
+                let lanes = unsafe { _mm_load_ps(node.planes[row][4 * h..].as_ptr()) };
+                _mm256_cvtps_pd(lanes)
+            };
+            let mut near = _mm256_setzero_pd();
+            let mut far = _mm256_set1_pd(limit);
+            for k in 0..3 {
+                let o = _mm256_set1_pd(r.origin[k]);
+                let inv = _mm256_set1_pd(r.inv_dir[k]);
+                let tn = _mm256_mul_pd(_mm256_sub_pd(half(r.near[k]), o), inv);
+                let tf = _mm256_mul_pd(_mm256_sub_pd(half(r.far[k]), o), inv);
+                near = _mm256_max_pd(tn, near);
+                far = _mm256_min_pd(tf, far);
+            }
+            let far = _mm256_mul_pd(far, _mm256_set1_pd(f64::SLACK));
+            let inside = _mm256_cmp_pd_mask::<_CMP_LE_OQ>(near, far);
+            // SAFETY: `t` holds 8 f64; lanes 4h..4h+4 are in bounds of the unaligned store.
+            unsafe { _mm256_storeu_pd(t.as_mut_ptr().add(4 * h), near) };
+            mask |= u32::from(inside) << (4 * h);
+        }
+        mask
+    }
+
+    /// The `f64` test in one 8-lane register. Measured slower than the halves on the machine
+    /// of `results/README.md` ("AVX-512"), kept beside them, tested, for measuring again.
+    #[cfg_attr(not(test), expect(dead_code, reason = "measured slower; tested, not traced"))]
+    #[inline]
+    #[target_feature(enable = "avx512f,avx512vl")]
+    pub fn hits_f64_zmm(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+        let plane = |row: usize| {
+            // SAFETY: a row is 8 f32, 32-byte aligned (`Node` is, and rows are 32 bytes).
+            _mm512_cvtps_pd(unsafe { _mm256_load_ps(node.planes[row].as_ptr()) })
+        };
+        let mut near = _mm512_setzero_pd();
+        let mut far = _mm512_set1_pd(limit);
+        for k in 0..3 {
+            let o = _mm512_set1_pd(r.origin[k]);
+            let inv = _mm512_set1_pd(r.inv_dir[k]);
+            let tn = _mm512_mul_pd(_mm512_sub_pd(plane(r.near[k]), o), inv);
+            let tf = _mm512_mul_pd(_mm512_sub_pd(plane(r.far[k]), o), inv);
+            near = _mm512_max_pd(tn, near);
+            far = _mm512_min_pd(tf, far);
+        }
+        let far = _mm512_mul_pd(far, _mm512_set1_pd(f64::SLACK));
+        let inside = _mm512_cmp_pd_mask::<_CMP_LE_OQ>(near, far);
+        // SAFETY: `t` holds the 8 f64 of the unaligned store.
+        unsafe { _mm512_storeu_pd(t.as_mut_ptr(), near) };
+        u32::from(inside)
+    }
+}
+
 /// A fixed-size stack that is never initialised as a whole (one ray pushes a few entries of
 /// its [`STACK`]: clearing them all would cost more than the pushes).
 struct Stack<E> {
@@ -260,9 +437,34 @@ fn lane<S: Lane, T: Real>(x: T) -> S {
     S::from_f64(x.to_f64())
 }
 
+/// [`closest`] compiled with AVX-512: the loop and everything it inlines (the node test, the
+/// caller's leaf closure) in one function that enables the instructions.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl")]
+pub fn closest_avx512<S, T, F>(test: Avx512, nodes: &[Node], ray: &Ray<T>, t_max: T, leaf: F)
+where
+    S: Lane + From<f32>,
+    T: Real,
+    F: FnMut(Range<usize>, &mut T),
+{
+    closest::<S, T, F>(test, nodes, ray, t_max, leaf);
+}
+
+/// [`any`] compiled with AVX-512 (see [`closest_avx512`]).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl")]
+pub fn any_avx512<S, T, F>(test: Avx512, nodes: &[Node], ray: &Ray<T>, t_max: T, leaf: F) -> bool
+where
+    S: Lane + From<f32>,
+    T: Real,
+    F: FnMut(Range<usize>) -> bool,
+{
+    any::<S, T, F>(test, nodes, ray, t_max, leaf)
+}
+
 /// See [`super::Bvh::closest`].
 #[inline(always)]
-pub fn closest<S, T, F>(nodes: &[Node], ray: &Ray<T>, t_max: T, mut leaf: F)
+pub fn closest<S, T, F>(test: impl NodeTest, nodes: &[Node], ray: &Ray<T>, t_max: T, mut leaf: F)
 where
     S: Lane + From<f32>,
     T: Real,
@@ -281,7 +483,7 @@ where
             leaf(leaf_slots(current), &mut limit);
         } else {
             let node = &nodes[current as usize];
-            let mask = S::hits(node, &prepared, lane(limit), &mut t);
+            let mask = test.hits(node, &prepared, lane(limit), &mut t);
             if mask != 0 {
                 let first = mask.trailing_zeros() as usize;
                 let rest = mask & (mask - 1);
@@ -338,7 +540,13 @@ where
 
 /// See [`super::Bvh::any`].
 #[inline(always)]
-pub fn any<S, T, F>(nodes: &[Node], ray: &Ray<T>, t_max: T, mut leaf: F) -> bool
+pub fn any<S, T, F>(
+    test: impl NodeTest,
+    nodes: &[Node],
+    ray: &Ray<T>,
+    t_max: T,
+    mut leaf: F,
+) -> bool
 where
     S: Lane + From<f32>,
     T: Real,
@@ -359,7 +567,7 @@ where
             }
         } else {
             let node = &nodes[current as usize];
-            let mut mask = S::hits(node, &prepared, limit, &mut t);
+            let mut mask = test.hits(node, &prepared, limit, &mut t);
             if mask != 0 {
                 current = node.refs[mask.trailing_zeros() as usize];
                 mask &= mask - 1;
@@ -409,6 +617,16 @@ mod tests {
                 assert!(t[lane] == u[lane], "{:?} {:?}", t[lane], u[lane]);
             }
         }
+        #[cfg(target_arch = "x86_64")]
+        if crate::simd::Isa::detected() == crate::simd::Isa::Avx512 {
+            let mut v = [S::ZERO; WIDTH];
+            // SAFETY: the CPU has AVX-512F and VL (just detected).
+            let wide = unsafe { S::hits_avx512(&node, &prepared, S::from_f64(limit), &mut v) };
+            assert_eq!(wide, expect, "avx512: {ray:?} {limit}");
+            // Every lane, hit or not: the same entry distances (never NaN: `max` keeps the
+            // running bound, which starts at 0, over a NaN distance).
+            assert!(t == v, "{t:?} {v:?}");
+        }
     }
 
     #[test]
@@ -453,6 +671,43 @@ mod tests {
             for (lane, want) in lanes.into_iter().zip(want) {
                 assert_eq!(mask >> lane & 1, 1, "{ray:?}: lane {lane}");
                 assert!(t[lane] == S::from_f64(want), "{ray:?}: lane {lane}: {:?}", t[lane]);
+            }
+        }
+    }
+
+    /// The kept `f64` AVX-512 test (two halves) and the 8-lane one agree lane for lane.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn both_avx512_f64_tests_agree() {
+        if crate::simd::Isa::detected() != crate::simd::Isa::Avx512 {
+            println!("note: this CPU has no AVX-512 (F and VL): nothing to compare");
+            return;
+        }
+        let boxes: Vec<([f32; 3], [f32; 3])> = (0..8)
+            .map(|i| {
+                let x = i as f32 * 0.75 - 3.0;
+                ([x, -1.0, 0.5 * x], [x + 1.5, 1.0, 0.5 * x + 2.0])
+            })
+            .collect();
+        let node = node_with(&boxes);
+        for (o, d) in [
+            ([-10.0, 0.1, 0.0], [1.0, 0.01, 0.1]),
+            ([0.0, 0.0, -5.0], [0.0, 0.0, 1.0]),
+            ([3.0, -0.0, 1.0], [-1.0, -0.0, -0.3]),
+            ([-1.5, 1.0, 0.0], [0.3, 0.0, 0.2]),
+        ] {
+            let prepared = Prepared::<f64>::new(&Ray::new(o, d)).unwrap();
+            for limit in [f64::INFINITY, 4.0, 0.5] {
+                let (mut a, mut b) = ([0.0; WIDTH], [0.0; WIDTH]);
+                // SAFETY: the CPU has AVX-512F and VL (just detected).
+                let (ma, mb) = unsafe {
+                    (
+                        avx512::hits_f64(&node, &prepared, limit, &mut a),
+                        avx512::hits_f64_zmm(&node, &prepared, limit, &mut b),
+                    )
+                };
+                assert_eq!((ma, a.map(f64::to_bits)), (mb, b.map(f64::to_bits)), "{o:?} {d:?}");
+                assert_eq!(ma, f64::hits(&node, &prepared, limit, &mut b), "{o:?} {d:?}");
             }
         }
     }

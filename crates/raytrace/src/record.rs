@@ -135,6 +135,9 @@ pub struct MachineRecord {
     pub cores: usize,
     /// The vector instructions the build compiled in (`backends::machine::target_features`).
     pub target_features: String,
+    /// The instruction sets of the BVH's node test, chosen at run time
+    /// (`backends::machine::node_test`), e.g. `f32 avx512, f64 avx2`.
+    pub node_test: String,
     /// The operating system and architecture, e.g. `linux x86_64`.
     pub os: String,
 }
@@ -148,6 +151,7 @@ impl MachineRecord {
             cpu: machine::cpu_model(),
             cores: machine::cores(),
             target_features: machine::target_features(),
+            node_test: machine::node_test(),
             os: format!("{} {}", std::env::consts::OS, std::env::consts::ARCH),
         }
     }

@@ -310,6 +310,7 @@ fn stats_json_has_exactly_the_documented_keys() {
     assert!(v["machine"]["cores"].as_u64().unwrap() >= 1);
     assert!(!v["machine"]["cpu"].as_str().unwrap().is_empty());
     assert!(v["machine"]["target_features"].is_string());
+    assert!(v["machine"]["node_test"].as_str().unwrap().starts_with("f32 "));
     // The auto camera frames the square from -z.
     let eye = &v["camera"]["eye"];
     assert!(eye[2].as_f64().unwrap() < 4.0, "{eye}");
