@@ -3,8 +3,8 @@
 //! images rendered by `render::trace` (as `raytrace` renders them), the back ends chosen
 //! through `backends`. See python/README.md for the Python API.
 //!
-//! A [`Scene`] builds its BVH once, with the back end and precision it was given, and keeps
-//! it behind the object-safe [`Traced`] so that one Python class serves every back end. The
+//! A `Scene` builds its BVH once, with the back end and precision it was given, and keeps
+//! it behind the object-safe `Traced` so that one Python class serves every back end. The
 //! GIL is released while a BVH is built and while rays are traced; the work runs on rayon's
 //! global pool (one thread per core, or `RAYON_NUM_THREADS`).
 
@@ -298,8 +298,8 @@ fn columns_of<'py>(
 /// per ray (6 or 8); the same checks in the same order, with the same messages: a numpy
 /// array of little-endian float32 or float64 (`TypeError` otherwise), not in Fortran order
 /// (`ValueError`: an F-ordered array is what `np.save` writes with `fortran_order: True`,
-/// which `raycast` rejects), of shape (N, 6) or (N, 8) (`ValueError`). Any other layout (a strided view) is
-/// copied into C order, as `np.save` would write it.
+/// which `raycast` rejects), of shape (N, 6) or (N, 8) (`ValueError`). Any other layout (a
+/// strided view) is copied into C order, as `np.save` would write it.
 ///
 /// A C-ordered float64 array is read in place, without a copy (so it must not be written to
 /// by another thread while the rays are traced).
