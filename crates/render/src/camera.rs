@@ -345,6 +345,62 @@ fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
     (len > 0.0 && len.is_finite() && len > scale * 1e-12).then(|| v.map(|x| x / len))
 }
 
+/// Where the camera of a render goes: a base placement, then the values given on top of it
+/// (`raytrace`'s `--camera`, `--eye`, `--look-at`, `--up` and `--fov`; the Python module's
+/// `Scene.render`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    /// The base: [`Camera::auto`] framing the mesh's bounding sphere (`true`), or the
+    /// [origin camera](Camera::origin)'s eye and look-at point (`false`).
+    pub auto: bool,
+    /// The eye, instead of the base's.
+    pub eye: Option<[f64; 3]>,
+    /// The point looked at, instead of the base's (the sphere's centre, or `(0, 0, 1)`).
+    pub look_at: Option<[f64; 3]>,
+    /// The up hint, instead of `(0, 1, 0)`.
+    pub up: Option<[f64; 3]>,
+    /// The vertical field of view in degrees.
+    pub fov_deg: f64,
+}
+
+/// Why a [`Placement`] gave no camera.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlacementError {
+    /// The automatic placement failed (a bad field of view or aspect ratio).
+    #[error("camera auto: {0}")]
+    Auto(CameraError),
+    /// The camera from the eye, look-at point, up hint and field of view is not valid.
+    #[error("bad camera: {0}")]
+    Camera(CameraError),
+}
+
+impl Placement {
+    /// The camera for a mesh with bounding sphere `sphere` (centre, radius) and an image of
+    /// `aspect` ratio (width / height), with the look-at point and up hint it uses.
+    ///
+    /// # Errors
+    ///
+    /// [`PlacementError`], with the [`CameraError`] inside.
+    pub fn camera(
+        &self,
+        sphere: ([f64; 3], f64),
+        aspect: f64,
+    ) -> Result<(Camera, [f64; 3], [f64; 3]), PlacementError> {
+        let (center, radius) = sphere;
+        let base_eye = if self.auto {
+            Camera::auto(center, radius, self.fov_deg, aspect).map_err(PlacementError::Auto)?.eye()
+        } else {
+            [0.0; 3]
+        };
+        let eye = self.eye.unwrap_or(base_eye);
+        let up = self.up.unwrap_or([0.0, 1.0, 0.0]);
+        let look_at = self.look_at.unwrap_or(if self.auto { center } else { [0.0, 0.0, 1.0] });
+        let camera =
+            Camera::look_at(eye, look_at, up, self.fov_deg).map_err(PlacementError::Camera)?;
+        Ok((camera, look_at, up))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

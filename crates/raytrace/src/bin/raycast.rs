@@ -10,17 +10,14 @@ use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use clap::Parser;
-use intersect::{Intersector, Ray, Real, Triangle};
-use rayon::prelude::*;
+use intersect::{Intersector, Real};
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::record::{OutputRecord, Record};
 use raytrace::{Named, Stats, Timings, UsageError};
+use render::cast::{self, Columns};
 use render::output::{AtomicFile, npy};
 use scene::Mesh;
-
-/// Rays traced between two updates of the progress bar.
-const RAYS_PER_BLOCK: usize = 4096;
 
 /// Trace your own rays through a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz).
 ///
@@ -85,46 +82,26 @@ enum Extra {
     Prim,
 }
 
-/// The columns of HITS, in order.
-#[derive(Clone, Copy, Debug)]
-struct Columns {
-    any_hit: bool,
-    point: bool,
-    normal: bool,
-    prim: bool,
-}
-
-impl Columns {
-    /// The columns `cli` asks for, or a usage error for an extra that does not go with the
-    /// query.
-    fn of(cli: &Cli) -> Result<Self, UsageError> {
-        let has = |e| cli.with.contains(&e);
-        let c = Self {
-            any_hit: cli.any_hit,
-            point: has(Extra::Point),
-            normal: has(Extra::Normal),
-            prim: has(Extra::Prim),
-        };
-        if c.any_hit && (c.point || c.normal) {
-            return Err(UsageError(
-                "--with point and normal need a closest hit: not with --any-hit".into(),
-            ));
-        }
-        if !c.any_hit && c.prim {
-            return Err(UsageError(
-                "--with prim is for --any-hit (the closest hit always has its triangle)".into(),
-            ));
-        }
-        Ok(c)
+/// The columns `cli` asks for, or a usage error for an extra that does not go with the query.
+fn columns(cli: &Cli) -> Result<Columns, UsageError> {
+    let has = |e| cli.with.contains(&e);
+    let c = Columns {
+        any_hit: cli.any_hit,
+        point: has(Extra::Point),
+        normal: has(Extra::Normal),
+        prim: has(Extra::Prim),
+    };
+    if c.any_hit && (c.point || c.normal) {
+        return Err(UsageError(
+            "--with point and normal need a closest hit: not with --any-hit".into(),
+        ));
     }
-
-    fn count(self) -> usize {
-        if self.any_hit {
-            1 + usize::from(self.prim)
-        } else {
-            4 + 3 * usize::from(self.point) + 3 * usize::from(self.normal)
-        }
+    if !c.any_hit && c.prim {
+        return Err(UsageError(
+            "--with prim is for --any-hit (the closest hit always has its triangle)".into(),
+        ));
     }
+    Ok(c)
 }
 
 fn main() -> ExitCode {
@@ -142,7 +119,7 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
         let e = format!("{hits}: the hits are written as NumPy arrays: use a .npy extension");
         return Err(UsageError(e).into());
     }
-    let columns = Columns::of(cli)?;
+    let columns = columns(cli)?;
     let stats_path = cli.stats.as_deref();
     let inputs =
         [Named { role: "mesh", path: &cli.input }, Named { role: "rays", path: &cli.rays }];
@@ -255,105 +232,24 @@ impl Job for CastJob<'_> {
         self.progress.phase("building the BVH");
         let start = Instant::now();
         let accel = Accel::build(intersector, &self.mesh.triangles());
-        // The triangles in f64 for the hit points and normals, only when asked for.
-        let exact: Vec<Triangle<f64>> = if self.columns.point || self.columns.normal {
-            self.mesh.triangles()
-        } else {
-            Vec::new()
-        };
         let build = start.elapsed();
         let (stride, columns) = (self.stride, self.columns);
         let n = self.rays.len() / stride;
         self.progress.trace(n as u64);
         let start = Instant::now();
-        let inf = <I::Real as Real>::INFINITY;
-        // The ray and its segment in the kernel's precision, or None for a miss by definition.
-        let ray = |r: &[f64]| {
-            let ray: Ray<I::Real> = Ray::new([r[0], r[1], r[2]], [r[3], r[4], r[5]]).cast();
-            let (t_min, t_max) = if stride == 8 {
-                (<I::Real as Real>::from_f64(r[6]), <I::Real as Real>::from_f64(r[7]))
-            } else {
-                (<I::Real as Real>::ZERO, inf)
-            };
-            // Rounding to f32 can overflow a finite f64 to infinity: check after the cast.
-            let finite = ray.origin.iter().chain(&ray.dir).all(|x| x.is_finite());
-            let segment = !t_min.is_nan() && !t_max.is_nan();
-            (finite && segment && ray.dir != [<I::Real as Real>::ZERO; 3])
-                .then_some((ray, t_min, t_max))
-        };
-        let width = columns.count();
-        let mut hits = vec![0.0; n * width];
-        // In blocks, each writing its own rows of the hits, so that the bar can count them.
-        let blocks = self.rays.par_chunks(stride * RAYS_PER_BLOCK);
-        blocks.zip(hits.par_chunks_mut(width * RAYS_PER_BLOCK)).for_each(|(rays, out)| {
-            for (r, h) in rays.chunks_exact(stride).zip(out.chunks_exact_mut(width)) {
-                let ray = ray(r);
-                if columns.any_hit {
-                    let found = match ray {
-                        Some((ray, t_min, t_max)) if columns.prim => {
-                            accel.any_hit_triangle(&ray, t_min, t_max)
-                        }
-                        Some((ray, t_min, t_max)) => {
-                            accel.any_hit_between(&ray, t_min, t_max).then_some(0)
-                        }
-                        None => None,
-                    };
-                    h[0] = f64::from(u8::from(found.is_some()));
-                    if columns.prim {
-                        h[1] = found.map_or(-1.0, f64::from);
-                    }
-                    continue;
-                }
-                let hit = ray
-                    .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max));
-                let Some(hit) = hit else {
-                    h.copy_from_slice(&MISS[..width]);
-                    continue;
-                };
-                let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
-                h[..4].copy_from_slice(&[hit.t.to_f64(), f64::from(hit.prim), u, v]);
-                let mut rest = &mut h[4..];
-                let [a, b, c] =
-                    exact.get(hit.prim as usize).map_or([[0.0; 3]; 3], |t| t.vertices());
-                if columns.point {
-                    let w = 1.0 - u - v;
-                    for k in 0..3 {
-                        rest[k] = w * a[k] + u * b[k] + v * c[k];
-                    }
-                    rest = &mut rest[3..];
-                }
-                if columns.normal {
-                    rest[..3].copy_from_slice(&unit_normal(a, b, c));
-                }
-            }
-            self.progress.inc((out.len() / width) as u64);
-        });
+        let mut hits = vec![0.0; n * columns.count()];
+        let inc = |rays: usize| self.progress.inc(rays as u64);
+        cast::trace_rays(&accel, self.mesh, self.rays, stride, columns, &mut hits, &inc);
         let trace = start.elapsed();
         let t = self
             .samples
             .iter()
             .map(|&k| {
-                ray(&self.rays[stride * k..stride * (k + 1)])
+                cast::kernel_ray::<I::Real>(&self.rays[stride * k..stride * (k + 1)], stride)
                     .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max))
                     .map(|hit| hit.t.to_f64())
             })
             .collect();
         (I::NAME, hits, build, trace, t)
     }
-}
-
-/// A miss's row, as long as the longest row: `+inf, -1`, then NaN.
-const MISS: [f64; 10] = {
-    let mut row = [f64::NAN; 10];
-    row[0] = f64::INFINITY;
-    row[1] = -1.0;
-    row
-};
-
-/// `(b - a) x (c - a)`, normalised (NaN for a degenerate triangle, which no ray hits).
-fn unit_normal(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
-    let (e1, e2) = (intersect::vec3::sub(b, a), intersect::vec3::sub(c, a));
-    let n = intersect::vec3::cross(e1, e2);
-    let len = intersect::vec3::dot(n, n).sqrt();
-    n.map(|x| x / len)
 }

@@ -16,7 +16,7 @@ use raytrace::args::{parse_fov, parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::record::{CameraRecord, OutputRecord, Record};
 use raytrace::{CompareStats, Named, Stats, Timings, UsageError};
-use render::camera::{Camera, DEFAULT_FOV_DEG};
+use render::camera::{Camera, DEFAULT_FOV_DEG, Placement, PlacementError};
 use render::compare::Hits;
 use render::frame::{Frame, FrameError, MAX_SIDE, Mode};
 use render::output::{AtomicFile, Format, ImageOutput};
@@ -367,27 +367,20 @@ fn index(backends: &[Backend], b: Backend) -> usize {
 /// options that place it again.
 fn camera(cli: &Cli, mesh: &Mesh) -> anyhow::Result<(Camera, CameraRecord)> {
     let aspect = f64::from(cli.width) / f64::from(cli.height);
-    let base_eye = match cli.camera {
-        CameraArg::Auto => {
-            let (center, radius) = mesh.bounding_sphere();
-            Camera::auto(center, radius, cli.fov, aspect).context("--camera auto")?.eye()
-        }
-        CameraArg::Origin => [0.0; 3],
+    let placement = Placement {
+        auto: cli.camera == CameraArg::Auto,
+        eye: cli.eye,
+        look_at: cli.look_at,
+        up: cli.up,
+        fov_deg: cli.fov,
     };
-    let eye = cli.eye.unwrap_or(base_eye);
-    let up = cli.up.unwrap_or([0.0, 1.0, 0.0]);
-    let look_at = look_at(cli, mesh);
-    let camera = Camera::look_at(eye, look_at, up, cli.fov).context("bad camera")?;
+    let (camera, look_at, up) =
+        placement.camera(mesh.bounding_sphere(), aspect).map_err(|e| match e {
+            PlacementError::Auto(e) => anyhow::Error::new(e).context("--camera auto"),
+            PlacementError::Camera(e) => anyhow::Error::new(e).context("bad camera"),
+        })?;
     let placed = CameraRecord::new(&camera, look_at, up);
     Ok((camera, placed))
-}
-
-/// The point looked at: `--look-at`, else the `--camera` placement's.
-fn look_at(cli: &Cli, mesh: &Mesh) -> [f64; 3] {
-    cli.look_at.unwrap_or_else(|| match cli.camera {
-        CameraArg::Auto => mesh.bounding_sphere().0,
-        CameraArg::Origin => [0.0, 0.0, 1.0],
-    })
 }
 
 /// Builds the acceleration structure and renders the image and/or traces the hits for
