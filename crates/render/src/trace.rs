@@ -20,6 +20,14 @@
 //! Only the nearest hit's triangle is looked up for normals; traversal computes nothing but
 //! `t` and barycentrics.
 //!
+//! # Packets
+//!
+//! Each tile's rays are traced together, in packets of 8 x 8 pixels
+//! ([`Accel::closest_hits_packet`], [`Accel::any_hits_packet`]): the rays of a tile leave one
+//! eye in nearly the same direction, so a packet tests each node of the tree once where single
+//! rays test it once each. The answers are those of [`Accel::closest_hit`] and
+//! [`Accel::any_hit`] per pixel, bit for bit, ties included; only the speed differs.
+//!
 //! # Parallelism and progress
 //!
 //! The image is cut into bands of at most [`TILE`] rows, each traced as a row of
@@ -30,7 +38,7 @@
 //! caller can drive a progress bar; the calls add up to `width * height`.
 
 use intersect::vec3::{cross, dot, sub};
-use intersect::{Intersector, Real};
+use intersect::{Hit, Intersector, Ray, Real};
 use rayon::prelude::*;
 
 use crate::camera::Camera;
@@ -76,20 +84,27 @@ pub fn render_frame<I: Intersector>(
     let inf = <I::Real as Real>::INFINITY;
     let ray = |i, j| camera.ray::<I::Real>(i, j, w, h);
     let light = light_direction(camera);
+    // Every mode traces its tiles in packets (the rays of a tile leave one eye: coherent);
+    // the answers are those of single rays, bit for bit.
+    let closest = |rays: &[Ray<I::Real>], out: &mut [Option<Hit<I::Real>>]| {
+        accel.closest_hits_packet(rays, inf, out);
+    };
     match frame.data_mut() {
         FrameData::Alpha(px) => {
-            fill(px, w, h, progress, |i, j| u8::from(accel.any_hit(&ray(i, j), inf)));
+            let any =
+                |rays: &[Ray<I::Real>], out: &mut [bool]| accel.any_hits_packet(rays, inf, out);
+            fill_traced(px, w, h, progress, ray, any, |_, _, hit| u8::from(hit));
         }
-        FrameData::Depth(px) => fill(px, w, h, progress, |i, j| {
-            accel.closest_hit(&ray(i, j)).map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
+        FrameData::Depth(px) => fill_traced(px, w, h, progress, ray, closest, |_, _, hit| {
+            hit.map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
         }),
-        FrameData::Normal(px) => fill(px, w, h, progress, |i, j| {
-            accel.closest_hit(&ray(i, j)).map_or([0.0; 3], |hit| {
+        FrameData::Normal(px) => fill_traced(px, w, h, progress, ray, closest, |_, _, hit| {
+            hit.map_or([0.0; 3], |hit| {
                 geometric_normal(mesh, hit.prim as usize).map_or([0.0; 3], |n| n.map(|c| c as f32))
             })
         }),
-        FrameData::Shade(px) => fill(px, w, h, progress, |i, j| {
-            accel.closest_hit(&ray(i, j)).map_or([0.0; 3], |hit| {
+        FrameData::Shade(px) => fill_traced(px, w, h, progress, ray, closest, |i, j, hit| {
+            hit.map_or([0.0; 3], |hit| {
                 let dir = camera.direction(i, j, w, h);
                 let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
                 let n = shading_normal(mesh, hit.prim as usize, u, v, dir);
@@ -97,11 +112,15 @@ pub fn render_frame<I: Intersector>(
                 [AMBIENT + (1.0 - AMBIENT) * lambert; 3]
             })
         }),
-        FrameData::Prim(px) => fill(px, w, h, progress, |i, j| {
-            accel.closest_hit(&ray(i, j)).map_or(u32::MAX, |hit| hit.prim)
+        FrameData::Prim(px) => fill_traced(px, w, h, progress, ray, closest, |_, _, hit| {
+            hit.map_or(u32::MAX, |hit| hit.prim)
         }),
     }
 }
+
+/// Side of the square blocks of pixels whose rays are traced as one packet (the packet size
+/// of `bvh`, [`bvh::PACKET`], is 8 x 8).
+const BLOCK: u32 = 8;
 
 /// Computes every pixel of a `w x h` row-major buffer with `pixel(i, j)`, in parallel bands
 /// of tiles, reporting finished pixels to `progress`.
@@ -112,6 +131,55 @@ pub(crate) fn fill<P: Send>(
     progress: &(impl Fn(usize) + Sync),
     pixel: impl Fn(u32, u32) -> P + Sync,
 ) {
+    tiles(px, w, h, progress, |rows, (i0, i1), (j0, rows_here)| {
+        for dj in 0..rows_here {
+            let row = &mut rows[(dj * w) as usize..][..w as usize];
+            for i in i0..i1 {
+                row[i as usize] = pixel(i, j0 + dj);
+            }
+        }
+    });
+}
+
+/// [`fill`] by whole tiles: the rays of each tile (`ray(i, j)`) are handed to `trace` at once,
+/// in [`BLOCK`] x [`BLOCK`] blocks, and each pixel is `pixel(i, j, its answer)`.
+fn fill_traced<P: Send, R, Q: Copy + Default>(
+    px: &mut [P],
+    w: u32,
+    h: u32,
+    progress: &(impl Fn(usize) + Sync),
+    ray: impl Fn(u32, u32) -> R + Sync,
+    trace: impl Fn(&[R], &mut [Q]) + Sync,
+    pixel: impl Fn(u32, u32, Q) -> P + Sync,
+) {
+    tiles(px, w, h, progress, |rows, (i0, i1), (j0, rows_here)| {
+        let mut at = Vec::with_capacity((TILE * TILE) as usize);
+        for bj in (0..rows_here).step_by(BLOCK as usize) {
+            for bi in (i0..i1).step_by(BLOCK as usize) {
+                for dj in bj..(bj + BLOCK).min(rows_here) {
+                    at.extend((bi..(bi + BLOCK).min(i1)).map(|i| (i, dj)));
+                }
+            }
+        }
+        let rays: Vec<R> = at.iter().map(|&(i, dj)| ray(i, j0 + dj)).collect();
+        let mut answers = vec![Q::default(); rays.len()];
+        trace(&rays, &mut answers);
+        for (&(i, dj), &answer) in at.iter().zip(&answers) {
+            rows[(dj * w + i) as usize] = pixel(i, j0 + dj, answer);
+        }
+    });
+}
+
+/// Cuts a `w x h` row-major buffer into bands of tiles shared among the threads; `tile` fills
+/// one tile of its band (`rows`, the band's rows): columns `i0..i1`, the band's `rows_here`
+/// rows from image row `j0`. Reports each finished tile to `progress`.
+fn tiles<P: Send>(
+    px: &mut [P],
+    w: u32,
+    h: u32,
+    progress: &(impl Fn(usize) + Sync),
+    tile: impl Fn(&mut [P], (u32, u32), (u32, u32)) + Sync,
+) {
     debug_assert_eq!(px.len(), w as usize * h as usize);
     // Short bands for short images, so that every thread gets a few to balance the load.
     let threads = rayon::current_num_threads() as u32;
@@ -121,12 +189,7 @@ pub(crate) fn fill<P: Send>(
         let rows_here = rows.len() as u32 / w;
         for i0 in (0..w).step_by(TILE as usize) {
             let i1 = (i0 + TILE).min(w);
-            for dj in 0..rows_here {
-                let row = &mut rows[(dj * w) as usize..][..w as usize];
-                for i in i0..i1 {
-                    row[i as usize] = pixel(i, j0 + dj);
-                }
-            }
+            tile(rows, (i0, i1), (j0, rows_here));
             progress(((i1 - i0) * rows_here) as usize);
         }
     });
@@ -167,7 +230,7 @@ fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
 mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
-    use intersect::{Algebra, Guarantees, Method, Ray, Triangle, TriangleHit};
+    use intersect::{Algebra, Guarantees, Method, Triangle, TriangleHit};
 
     use super::*;
     use crate::frame::Mode;
