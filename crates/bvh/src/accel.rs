@@ -276,10 +276,14 @@ impl<I: Intersector> Accel<I> {
     ) {
         assert_eq!(rays.len(), out.len(), "one answer per ray");
         out.fill(None);
-        let data: Vec<I::RayData> = rays.iter().map(|r| self.intersector.prepare_ray(r)).collect();
+        // Prepared when a ray first reaches a leaf (the same bits as up front): most rays of a
+        // frame where the mesh is small never do.
+        let mut data: Vec<Option<I::RayData>> = vec![None; rays.len()];
         let mut limits = vec![t_max; rays.len()];
         self.bvh.closest_packet(rays, &mut limits, |slots, i, limit| {
-            self.closest_in_leaf(slots, &rays[i], &data[i], limit, |_| true, &mut out[i]);
+            let ray = &rays[i];
+            let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
+            self.closest_in_leaf(slots, ray, &data, limit, |_| true, &mut out[i]);
         });
     }
 
@@ -291,11 +295,13 @@ impl<I: Intersector> Accel<I> {
     ///
     /// If `rays` and `out` differ in length.
     pub fn any_hits_packet(&self, rays: &[Ray<I::Real>], t_max: I::Real, out: &mut [bool]) {
-        let data: Vec<I::RayData> = rays.iter().map(|r| self.intersector.prepare_ray(r)).collect();
+        // Prepared lazily, as in `closest_hits_packet`.
+        let mut data: Vec<Option<I::RayData>> = vec![None; rays.len()];
         let limits = vec![t_max; rays.len()];
         self.bvh.any_packet(rays, &limits, out, |slots, i| {
-            let (ray, data) = (&rays[i], &data[i]);
-            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, data, t_max))
+            let ray = &rays[i];
+            let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
+            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &data, t_max))
         });
     }
 

@@ -65,9 +65,15 @@ struct Group<S> {
 }
 
 impl<S: Lane + From<f32>> Group<S> {
-    /// The packet of the rays `members` (positions in `rays`, all finite, all in `octant`), with
-    /// their limits.
-    fn new<T: Real>(rays: &[Ray<T>], members: &[usize], octant: usize, limits: &[T]) -> Self {
+    /// The packet of the rays `start + members` (positions in `rays`, all finite, all in
+    /// `octant`), with their limits.
+    fn new<T: Real>(
+        rays: &[Ray<T>],
+        start: usize,
+        members: &[u8],
+        octant: usize,
+        limits: &[T],
+    ) -> Self {
         let mut g = Group {
             len: members.len(),
             index: [0; PACKET],
@@ -82,7 +88,8 @@ impl<S: Lane + From<f32>> Group<S> {
             i_small: [S::ZERO; 3],
             i_big: [S::ZERO; 3],
         };
-        for (r, &i) in members.iter().enumerate() {
+        for (r, &m) in members.iter().enumerate() {
+            let i = start + usize::from(m);
             let ray = &rays[i];
             g.index[r] = i;
             for k in 0..3 {
@@ -152,7 +159,8 @@ impl<S: Lane + From<f32>> Group<S> {
         let lo: [S; 3] = core::array::from_fn(|k| S::from(node.planes[self.near[k]][lane]));
         let hi: [S; 3] = core::array::from_fn(|k| S::from(node.planes[self.far[k]][lane]));
         let mut mask = 0u64;
-        for r in 0..PACKET {
+        // Whole vectors of eight rays (lanes past `len` are dead, masked below).
+        for r in 0..self.len.next_multiple_of(8).min(PACKET) {
             let mut near = S::ZERO;
             let mut far = self.limit[r];
             for k in 0..3 {
@@ -203,10 +211,10 @@ fn octant<T: Real>(ray: &Ray<T>) -> Option<usize> {
     Some((0..3).map(|k| usize::from(ray.dir[k].to_f64().is_sign_negative()) << k).sum())
 }
 
-/// What [`groups`] hands out: a packet (positions in the caller's rays and their octant), or
-/// one ray to trace alone.
+/// What [`groups`] hands out: a packet (the first position of its chunk in the caller's rays,
+/// its rays' positions within the chunk, their octant), or one ray to trace alone.
 enum Work<'a> {
-    Packet(&'a [usize], usize),
+    Packet(usize, &'a [u8], usize),
     Single(usize),
 }
 
@@ -216,20 +224,21 @@ enum Work<'a> {
 fn groups<T: Real>(rays: &[Ray<T>], mut work: impl FnMut(Work<'_>)) {
     for start in (0..rays.len()).step_by(PACKET) {
         let end = (start + PACKET).min(rays.len());
-        let mut members = [[0usize; PACKET]; 8];
+        // Positions within the chunk: a small array to clear per chunk.
+        let mut members = [[0u8; PACKET]; 8];
         let mut counts = [0usize; 8];
-        for (i, ray) in rays.iter().enumerate().take(end).skip(start) {
+        for (i, ray) in rays[start..end].iter().enumerate() {
             if let Some(o) = octant(ray) {
-                members[o][counts[o]] = i;
+                members[o][counts[o]] = i as u8;
                 counts[o] += 1;
             }
         }
         for o in 0..8 {
             let m = &members[o][..counts[o]];
             if m.len() >= MIN_PACKET {
-                work(Work::Packet(m, o));
+                work(Work::Packet(start, m, o));
             } else {
-                m.iter().for_each(|&i| work(Work::Single(i)));
+                m.iter().for_each(|&i| work(Work::Single(start + usize::from(i))));
             }
         }
     }
@@ -272,8 +281,8 @@ where
     }
     let mut stack: Vec<(u32, S)> = Vec::with_capacity(64);
     groups(rays, |work| match work {
-        Work::Packet(members, octant) => {
-            let mut g = Group::<S>::new(rays, members, octant, limits);
+        Work::Packet(start, members, octant) => {
+            let mut g = Group::<S>::new(rays, start, members, octant, limits);
             closest_group(nodes, &mut g, &mut stack, limits, &mut leaf);
         }
         Work::Single(i) => {
@@ -361,8 +370,8 @@ where
     }
     let mut stack: Vec<u32> = Vec::with_capacity(64);
     groups(rays, |work| match work {
-        Work::Packet(members, octant) => {
-            let mut g = Group::<S>::new(rays, members, octant, limits);
+        Work::Packet(start, members, octant) => {
+            let mut g = Group::<S>::new(rays, start, members, octant, limits);
             any_group(nodes, &mut g, &mut stack, hit, &mut leaf);
         }
         Work::Single(i) => {
