@@ -19,6 +19,11 @@
 //!
 //! - `core`: the bench's trace loop (`throughput::trace::trace`): `Accel::closest_hit` or
 //!   `Accel::any_hit` per ray on rays already rounded to `f32`, hits counted.
+//! - `packet`: `Accel::closest_hits_packet` or `Accel::any_hits_packet` on the same rays,
+//!   handed over once in 8 x 8 blocks of pixels (the order `render_frame` traces them in; put
+//!   in that order before timing), every answer kept in a `Vec`. Primary rays only: on the
+//!   incoherent rays a packet's bounds span the mesh, and packets run hundreds of times slower
+//!   than single rays (`results/README.md`), which is why those keep the single-ray path.
 //! - `api`: the library API as a caller uses it: the same queries, every hit kept in a `Vec`.
 //! - `render`: `render::trace::render_frame`, the loop of `raytrace`, in `depth` mode (closest)
 //!   or `alpha` mode (any) on a rayon pool of one thread, on the same camera and image size:
@@ -45,6 +50,9 @@
 //! `la`/tinybvh or `la`/Embree (target at least 1.1 on primary rays, 1.0 incoherent), for a
 //! path of ours the core loop's speed over the path's (target at most 1.05). `hits` counts the
 //! rays that hit (the views' coverage, and a check that the tracers see the same scene).
+//!
+//! `WEDGE_VERSUS_ROWS=core,packet,tinybvh` measures only the rows named (`core` always: the
+//! ratios are to it).
 //!
 //! Run: `cargo build --release -p raytrace && cargo bench -p wedge-benches --bench versus`
 //! (about 15 minutes). With `WEDGE_BENCH_QUICK=1`: one round on the bunny and the bunny split
@@ -80,14 +88,17 @@ use wedge_benches::{criterion_dir, machine, quick_mode, results_dir, write_csv};
 const ROUNDS: usize = 5;
 /// Traces of each ray set per process; the best one counts.
 const REPEATS: usize = 3;
-/// Set in a child process: the path to measure (`core`, `api`, `render`, `tinybvh`).
+/// Set in a child process: the path to measure (`core`, `packet`, `api`, `render`,
+/// `tinybvh`).
 const CHILD: &str = "WEDGE_VERSUS_CHILD";
 /// The `fill` view's distance, as a fraction of `Camera::auto`'s.
 const FILL: f64 = 0.7;
 /// The `small` view's distance, as a multiple of `Camera::auto`'s.
 const SMALL: f64 = 3.0;
 /// The rows measured in processes of this bench.
-const IN_PROCESS: [&str; 4] = ["core", "api", "render", "tinybvh"];
+const IN_PROCESS: [&str; 5] = ["core", "packet", "api", "render", "tinybvh"];
+/// Names the rows to measure, comma-separated (default: all).
+const ROWS: &str = "WEDGE_VERSUS_ROWS";
 /// The row of the `raycast` binary.
 const RAYCAST: &str = "raycast";
 /// The Embree rows: as measured, and with the binding's cost taken off.
@@ -231,6 +242,11 @@ impl Job for LaPath<'_> {
                 let n = rays.len();
                 let (mrays, hits) = match (self.path, series.query) {
                     ("core", q) => best_of(n, || trace(&accel, black_box(&rays), q).hits),
+                    ("packet", q) => match series.view {
+                        Some(_) => packet(&accel, &in_blocks(&rays, side), q),
+                        // Incoherent rays take the single-ray path (see the module docs).
+                        None => (f64::NAN, 0),
+                    },
                     ("api", Query::Closest) => best_of(n, || {
                         let hits: Vec<_> = rays.iter().map(|r| accel.closest_hit(r)).collect();
                         hits.iter().filter(|h| h.is_some()).count() as u64
@@ -248,6 +264,41 @@ impl Job for LaPath<'_> {
                 (mrays, if mrays.is_nan() { f64::NAN } else { hits as f64 })
             })
             .collect()
+    }
+}
+
+/// The rays of a `side x side` frame, given row by row, in 8 x 8 blocks of pixels.
+fn in_blocks<T: Copy>(rays: &[T], side: u32) -> Vec<T> {
+    let side = side as usize;
+    let mut out = Vec::with_capacity(rays.len());
+    for bj in (0..side).step_by(8) {
+        for bi in (0..side).step_by(8) {
+            for j in bj..(bj + 8).min(side) {
+                out.extend_from_slice(&rays[j * side + bi..j * side + (bi + 8).min(side)]);
+            }
+        }
+    }
+    out
+}
+
+/// The packet queries on `rays` with no limit, every answer kept: best Mrays/s and hits.
+fn packet<I: Intersector>(accel: &Accel<I>, rays: &[Ray<I::Real>], query: Query) -> (f64, u64) {
+    let inf = <I::Real as Real>::INFINITY;
+    match query {
+        Query::Closest => {
+            let mut out = vec![None; rays.len()];
+            best_of(rays.len(), || {
+                accel.closest_hits_packet(black_box(rays), inf, &mut out);
+                out.iter().filter(|h| h.is_some()).count() as u64
+            })
+        }
+        Query::Any => {
+            let mut out = vec![false; rays.len()];
+            best_of(rays.len(), || {
+                accel.any_hits_packet(black_box(rays), inf, &mut out);
+                out.iter().filter(|&&h| h).count() as u64
+            })
+        }
     }
 }
 
@@ -478,19 +529,31 @@ struct Row {
 fn parent() -> Result<(), String> {
     let quick = quick_mode();
     let rounds = if quick { 1 } else { ROUNDS };
-    let mut names: Vec<String> = IN_PROCESS.map(String::from).to_vec();
-    let raycast = raycast_binary();
+    let wanted = std::env::var(ROWS).ok();
+    let wanted: Option<Vec<&str>> = wanted.as_deref().map(|w| w.split(',').collect());
+    if let Some(w) = &wanted
+        && let Some(bad) = w.iter().find(|n| {
+            !IN_PROCESS.contains(n) && **n != RAYCAST && **n != EMBREE[0] && **n != EMBREE[1]
+        })
+    {
+        return Err(format!("{ROWS}: unknown row {bad}"));
+    }
+    let chosen = |name: &str| name == "core" || wanted.as_ref().is_none_or(|w| w.contains(&name));
+    let mut names: Vec<String> =
+        IN_PROCESS.into_iter().filter(|n| chosen(n)).map(String::from).collect();
+    let raycast = raycast_binary().filter(|_| chosen(RAYCAST));
     match &raycast {
         Some(_) => names.push(RAYCAST.to_owned()),
+        None if !chosen(RAYCAST) => {}
         None => eprintln!(
             "note: no raycast rows (target/release/raycast is not built: \
              `cargo build --release -p raytrace`)"
         ),
     }
-    let embree = embree_available();
+    let embree = chosen(EMBREE[0]) && embree_available();
     if embree {
         names.push(EMBREE[0].to_owned());
-    } else {
+    } else if chosen(EMBREE[0]) {
         eprintln!("note: no Embree reference rows (`{} -c \"import embreex\"` failed)", python());
     }
     let dir = criterion_dir().join("versus-input");
@@ -541,7 +604,9 @@ fn parent() -> Result<(), String> {
     }
     check_hits(&rows)?;
     print_table(&names, &rows);
-    let out = if quick { criterion_dir() } else { results_dir() }.join("versus.csv");
+    // A run of some rows only does not overwrite the full table.
+    let file = if wanted.is_some() { "versus-rows.csv" } else { "versus.csv" };
+    let out = if quick { criterion_dir() } else { results_dir() }.join(file);
     write_csv(&out, &rows).map_err(|e| format!("{}: {e}", out.display()))?;
     println!("wrote {}", out.display());
     Ok(())
@@ -583,16 +648,18 @@ fn print_table(names: &[String], rows: &[Row]) {
     for n in names {
         let _ = write!(header, " {n} |");
     }
-    header.push_str(" la/tinybvh | la/Embree | core/api | core/render | core/raycast |");
+    header.push_str(
+        " la/tinybvh | la/Embree | core/packet | core/api | core/render | core/raycast |",
+    );
     println!("{header}");
-    println!("|{}", "---|".repeat(3 + names.len() + 5));
+    println!("|{}", "---|".repeat(3 + names.len() + 6));
     for r in rows.iter().filter(|r| r.path == "core") {
         let mut line = format!("| {} | {} | {} |", r.scene, r.view, r.ray_set);
         for n in names {
             let _ = write!(line, " {} |", cell(figure(n, r), 2));
         }
         let core = r.median_mrays_per_s;
-        for other in ["tinybvh", EMBREE[0], "api", "render", RAYCAST] {
+        for other in ["tinybvh", EMBREE[0], "packet", "api", "render", RAYCAST] {
             let _ = write!(line, " {} |", cell(figure(other, r).map(|x| core / x), 2));
         }
         println!("{line}");
