@@ -51,6 +51,9 @@ use rayon::prelude::*;
 
 use crate::Bvh;
 
+/// Rays per batch of the packet queries (a multiple of [`crate::PACKET`]: a 16 x 16 tile).
+const BATCH: usize = 256;
+
 /// Scenes with at least this many triangles prepare them in parallel.
 const PARALLEL_PREPARE: usize = 16384;
 
@@ -275,16 +278,20 @@ impl<I: Intersector> Accel<I> {
         out: &mut [Option<Hit<I::Real>>],
     ) {
         assert_eq!(rays.len(), out.len(), "one answer per ray");
-        out.fill(None);
-        // Prepared when a ray first reaches a leaf (the same bits as up front): most rays of a
-        // frame where the mesh is small never do.
-        let mut data: Vec<Option<I::RayData>> = vec![None; rays.len()];
-        let mut limits = vec![t_max; rays.len()];
-        self.bvh.closest_packet(rays, &mut limits, |slots, i, limit| {
-            let ray = &rays[i];
-            let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
-            self.closest_in_leaf(slots, ray, &data, limit, |_| true, &mut out[i]);
-        });
+        // In batches whose per-ray state stays in the cache, however many rays come at once.
+        for (rays, out) in rays.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
+            out.fill(None);
+            // Prepared when a ray first reaches a leaf (the same bits as up front): most rays
+            // of a frame where the mesh is small never do.
+            let mut data: [Option<I::RayData>; BATCH] = [None; BATCH];
+            let mut limits = [t_max; BATCH];
+            let limits = &mut limits[..rays.len()];
+            self.bvh.closest_packet(rays, limits, |slots, i, limit| {
+                let ray = &rays[i];
+                let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
+                self.closest_in_leaf(slots, ray, &data, limit, |_| true, &mut out[i]);
+            });
+        }
     }
 
     /// [`Accel::any_hit`] for every ray of `rays` with the same `t_max`, into `out`: the same
@@ -295,14 +302,17 @@ impl<I: Intersector> Accel<I> {
     ///
     /// If `rays` and `out` differ in length.
     pub fn any_hits_packet(&self, rays: &[Ray<I::Real>], t_max: I::Real, out: &mut [bool]) {
-        // Prepared lazily, as in `closest_hits_packet`.
-        let mut data: Vec<Option<I::RayData>> = vec![None; rays.len()];
-        let limits = vec![t_max; rays.len()];
-        self.bvh.any_packet(rays, &limits, out, |slots, i| {
-            let ray = &rays[i];
-            let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
-            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &data, t_max))
-        });
+        assert_eq!(rays.len(), out.len(), "one answer per ray");
+        // In batches, prepared lazily, as in `closest_hits_packet`.
+        let limits = [t_max; BATCH];
+        for (rays, out) in rays.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
+            let mut data: [Option<I::RayData>; BATCH] = [None; BATCH];
+            self.bvh.any_packet(rays, &limits[..rays.len()], out, |slots, i| {
+                let ray = &rays[i];
+                let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
+                self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &data, t_max))
+            });
+        }
     }
 
     /// Whether `ray` hits any triangle with `0 < t <= t_max`; stops at the first hit found.
