@@ -19,6 +19,11 @@
 //!
 //! - `core`: the bench's trace loop (`throughput::trace::trace`): `Accel::closest_hit` or
 //!   `Accel::any_hit` per ray on rays already rounded to `f32`, hits counted.
+//! - `packet`: `Accel::closest_hits_packet` or `Accel::any_hits_packet` on the same rays,
+//!   handed over once in 8 x 8 blocks of pixels (the order `render_frame` traces them in; put
+//!   in that order before timing), every answer kept in a `Vec`. Primary rays only: on the
+//!   incoherent rays a packet's bounds span the mesh, and packets run hundreds of times slower
+//!   than single rays (`results/README.md`), which is why those keep the single-ray path.
 //! - `api`: the library API as a caller uses it: the same queries, every hit kept in a `Vec`.
 //! - `render`: `render::trace::render_frame`, the loop of `raytrace`, in `depth` mode (closest)
 //!   or `alpha` mode (any) on a rayon pool of one thread, on the same camera and image size:
@@ -54,6 +59,8 @@
 //! rows; each writes `results/versus-<set>.csv` (a list of rows instead of a set's name writes
 //! `versus.partial.csv` in the criterion directory):
 //!
+//! - `packet`: `core`, `packet` and `tinybvh` (the packet path against single rays and the
+//!   reference);
 //! - `isa`: `core` and `core-avx2`, the core loop with the default node test (AVX-512 for
 //!   `f32` where the CPU has it) and with the AVX2 baseline (`WEDGE_ISA=avx2` in the child, see
 //!   `bvh::Isa`), and in `f64` with the default (AVX2) and with AVX-512 (`core-f64`,
@@ -99,18 +106,20 @@ use wedge_benches::{criterion_dir, machine, quick_mode, results_dir, write_csv};
 const ROUNDS: usize = 5;
 /// Traces of each ray set per process; the best one counts.
 const REPEATS: usize = 3;
-/// Set in a child process: the path to measure (`core`, `api`, `render`, `tinybvh`).
+/// Set in a child process: the path to measure (`core`, `packet`, `api`, `render`,
+/// `tinybvh`).
 const CHILD: &str = "WEDGE_VERSUS_CHILD";
 /// The `fill` view's distance, as a fraction of `Camera::auto`'s.
 const FILL: f64 = 0.7;
 /// The `small` view's distance, as a multiple of `Camera::auto`'s.
 const SMALL: f64 = 3.0;
 /// The rows measured in processes of this bench (and their `-2t` and `-avx2` forms).
-const IN_PROCESS: [&str; 5] = ["core", "api", "render", "tinybvh", "array"];
+const IN_PROCESS: [&str; 6] = ["core", "packet", "api", "render", "tinybvh", "array"];
 /// The rows of a full run, in order.
-const FULL: [&str; 4] = ["core", "api", "render", "tinybvh"];
+const FULL: [&str; 5] = ["core", "packet", "api", "render", "tinybvh"];
 /// The selections of [`ROWS_ENV`]: a name, its rows.
-const SETS: [(&str, &[&str]); 3] = [
+const SETS: [(&str, &[&str]); 4] = [
+    ("packet", &["core", "packet", "tinybvh"]),
     ("isa", &["core", "core-avx2", "core-f64", "core-f64-avx512"]),
     ("render", &["core", "render"]),
     ("threads", &["render", "render-2t", "array", "array-2t", "raycast", "raycast-2t"]),
@@ -280,6 +289,11 @@ impl Job for LaPath<'_> {
                     ("array", q) => {
                         best_of(n, || trace_parallel(self.pool, &accel, black_box(&rays), q).hits)
                     }
+                    ("packet", q) => match series.view {
+                        Some(_) => packet(&accel, &in_blocks(&rays, side), q),
+                        // Incoherent rays take the single-ray path (see the module docs).
+                        None => (f64::NAN, 0),
+                    },
                     ("api", Query::Closest) => best_of(n, || {
                         let hits: Vec<_> = rays.iter().map(|r| accel.closest_hit(r)).collect();
                         hits.iter().filter(|h| h.is_some()).count() as u64
@@ -297,6 +311,41 @@ impl Job for LaPath<'_> {
                 (mrays, if mrays.is_nan() { f64::NAN } else { hits as f64 })
             })
             .collect()
+    }
+}
+
+/// The rays of a `side x side` frame, given row by row, in 8 x 8 blocks of pixels.
+fn in_blocks<T: Copy>(rays: &[T], side: u32) -> Vec<T> {
+    let side = side as usize;
+    let mut out = Vec::with_capacity(rays.len());
+    for bj in (0..side).step_by(8) {
+        for bi in (0..side).step_by(8) {
+            for j in bj..(bj + 8).min(side) {
+                out.extend_from_slice(&rays[j * side + bi..j * side + (bi + 8).min(side)]);
+            }
+        }
+    }
+    out
+}
+
+/// The packet queries on `rays` with no limit, every answer kept: best Mrays/s and hits.
+fn packet<I: Intersector>(accel: &Accel<I>, rays: &[Ray<I::Real>], query: Query) -> (f64, u64) {
+    let inf = <I::Real as Real>::INFINITY;
+    match query {
+        Query::Closest => {
+            let mut out = vec![None; rays.len()];
+            best_of(rays.len(), || {
+                accel.closest_hits_packet(black_box(rays), inf, &mut out);
+                out.iter().filter(|h| h.is_some()).count() as u64
+            })
+        }
+        Query::Any => {
+            let mut out = vec![false; rays.len()];
+            best_of(rays.len(), || {
+                accel.any_hits_packet(black_box(rays), inf, &mut out);
+                out.iter().filter(|&&h| h).count() as u64
+            })
+        }
     }
 }
 
@@ -720,9 +769,11 @@ fn print_table(names: &[String], rows: &[Row]) {
     for n in names {
         let _ = write!(header, " {n} |");
     }
-    header.push_str(" la/tinybvh | la/Embree | core/api | core/render | core/raycast |");
+    header.push_str(
+        " la/tinybvh | la/Embree | core/packet | core/api | core/render | core/raycast |",
+    );
     println!("{header}");
-    println!("|{}", "---|".repeat(3 + names.len() + 5));
+    println!("|{}", "---|".repeat(3 + names.len() + 6));
     // One line per series of the first row (`core` in a full run).
     let first = names.first().map_or("core", String::as_str);
     for r in rows.iter().filter(|r| r.path == first) {
@@ -732,7 +783,7 @@ fn print_table(names: &[String], rows: &[Row]) {
         }
         // Over the core loop, where it was measured.
         let core = figure("core", r);
-        for other in ["tinybvh", EMBREE[0], "api", "render", RAYCAST] {
+        for other in ["tinybvh", EMBREE[0], "packet", "api", "render", RAYCAST] {
             let ratio = core.zip(figure(other, r)).map(|(c, x)| c / x);
             let _ = write!(line, " {} |", cell(ratio, 2));
         }

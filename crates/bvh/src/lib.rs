@@ -63,6 +63,22 @@
 //! any-hit queries stop at the first hit. The stack is a fixed array on the call stack: no
 //! allocation per ray.
 //!
+//! # Packets
+//!
+//! [`Bvh::closest_packet`] and [`Bvh::any_packet`] (and [`accel::Accel::closest_hits_packet`],
+//! [`accel::Accel::any_hits_packet`]) trace many rays at once: chunks of [`PACKET`] rays, split
+//! by the signs of their directions, walk the tree together. A node is tested once per packet,
+//! against an interval bound of its rays (their origins' and inverse directions' ranges per
+//! axis), which is conservative for every ray's own rounded box test; at a leaf each ray runs
+//! the single-ray box test and, if it passes, its kernel on the leaf's triangles. The hits are
+//! those of single rays, ties included (the `packet` module's docs give the argument; the
+//! tests check it on every back end). Coherent rays (a block of pixels from one eye) share
+//! most of their nodes, so the packet pays one node test where single rays pay one each;
+//! incoherent rays give wide intervals that meet most boxes, so they keep the single-ray
+//! queries. The rule: a caller tracing a camera's pixels uses the packet queries in 8 x 8
+//! blocks (`render::trace::render_frame` does), everything else the single-ray ones; within a
+//! chunk, an octant holding fewer than [`MIN_PACKET`] rays is traced ray by ray.
+//!
 //! # Precision of the boxes
 //!
 //! Boxes are stored in `f32` for both precisions: half the memory and twice the lanes of
@@ -106,6 +122,7 @@ mod aabb;
 pub mod accel;
 mod build;
 mod node;
+mod packet;
 mod simd;
 mod traverse;
 
@@ -117,6 +134,7 @@ use rayon::prelude::*;
 
 pub use aabb::Aabb;
 pub use node::{MAX_SLOTS, WIDTH};
+pub use packet::{MIN_PACKET, PACKET};
 pub use simd::{ISA_ENV, Isa};
 
 use build::{Info, PARALLEL_MIN, PrimRef};
@@ -383,6 +401,50 @@ impl<T: Real> Bvh<T> {
             traverse::closest::<f32, T, F>(Baseline, &self.nodes, ray, t_max, leaf);
         } else {
             traverse::closest::<f64, T, F>(Baseline, &self.nodes, ray, t_max, leaf);
+        }
+    }
+
+    /// [`Bvh::closest`] for many rays at once: packets of coherent rays walk the tree
+    /// together (see [Packets](self#packets)). `rays` are cut into chunks of [`PACKET`] in the
+    /// order given, so neighbours should be coherent (an 8 x 8 block of pixels from one eye).
+    ///
+    /// `leaf` gets a range of slots, the position of a ray in `rays` and that ray's limit,
+    /// which it lowers when it finds a nearer hit; `limits` holds each ray's `t_max` on entry
+    /// and its last limit on return. Every ray is offered every leaf that
+    /// [`Bvh::closest`] could offer it, and maybe more, in another order: a caller that keeps
+    /// the nearest hit under a total order (as [`Accel`](accel::Accel) does) gets the
+    /// single-ray answers.
+    ///
+    /// # Panics
+    ///
+    /// If `rays` and `limits` differ in length.
+    pub fn closest_packet<F>(&self, rays: &[Ray<T>], limits: &mut [T], leaf: F)
+    where
+        F: FnMut(Range<usize>, usize, &mut T),
+    {
+        if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
+            packet::closest::<f32, T, F>(&self.nodes, rays, limits, leaf);
+        } else {
+            packet::closest::<f64, T, F>(&self.nodes, rays, limits, leaf);
+        }
+    }
+
+    /// [`Bvh::any`] for many rays at once, in packets as [`Bvh::closest_packet`]: `leaf` gets
+    /// a range of slots and a ray's position, and returns whether that ray hit there (the ray
+    /// then stops); `hit[i]` says on return whether `leaf` returned `true` for ray `i` within
+    /// `(0, limits[i]]`.
+    ///
+    /// # Panics
+    ///
+    /// If `rays`, `limits` and `hit` differ in length.
+    pub fn any_packet<F>(&self, rays: &[Ray<T>], limits: &[T], hit: &mut [bool], leaf: F)
+    where
+        F: FnMut(Range<usize>, usize) -> bool,
+    {
+        if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
+            packet::any::<f32, T, F>(&self.nodes, rays, limits, hit, leaf);
+        } else {
+            packet::any::<f64, T, F>(&self.nodes, rays, limits, hit, leaf);
         }
     }
 

@@ -14,7 +14,7 @@ use core::ops::Range;
 pub const WIDTH: usize = 8;
 
 /// Bit marking a reference as a leaf.
-const LEAF: u32 = 1 << 31;
+pub(crate) const LEAF: u32 = 1 << 31;
 /// Bits holding `count - 1` in a leaf reference.
 const COUNT_BITS: u32 = 3;
 /// Slots a leaf reference can address: the first slot gets the 28 bits left.

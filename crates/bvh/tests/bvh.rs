@@ -318,11 +318,9 @@ fn random_soups_match_the_oracle_in_f64_and_f32() {
     }
 }
 
-/// A closed surface on an integer grid (a box of 8 x 6 x 4 unit cells, each face split into
-/// two triangles) hit exactly at vertices and edges: every hit there is a tie.
-#[test]
-fn exact_ties_on_shared_edges_and_vertices() {
-    let (nx, ny, nz) = (8, 6, 4);
+/// The closed surface of a box of `nx x ny x nz` unit cells on the integer grid, each face of
+/// a cell split into two triangles.
+fn grid_box(nx: i32, ny: i32, nz: i32) -> Vec<Triangle<f64>> {
     let mut tris = Vec::new();
     let mut quad = |p: [f64; 3], u: [f64; 3], v: [f64; 3]| {
         let at = |a: f64, b: f64| core::array::from_fn(|k| p[k] + a * u[k] + b * v[k]);
@@ -348,6 +346,15 @@ fn exact_ties_on_shared_edges_and_vertices() {
             }
         }
     }
+    tris
+}
+
+/// A closed surface on an integer grid (a box of 8 x 6 x 4 unit cells) hit exactly at
+/// vertices and edges: every hit there is a tie.
+#[test]
+fn exact_ties_on_shared_edges_and_vertices() {
+    let (nx, ny, nz) = (8, 6, 4);
+    let tris = grid_box(nx, ny, nz);
     let accel = Accel::build(mt::<f64>(), &tris);
     check_invariants(&accel, &tris);
     let accel32 = Accel::build(mt::<f32>(), &tris.iter().map(Triangle::cast).collect::<Vec<_>>());
@@ -595,4 +602,121 @@ fn every_instruction_set_visits_the_same_leaves() {
     let rays = rays(&mut rng, 3000, &tris);
     same::<f32>("soup", &tris, &rays);
     same::<f64>("soup", &tris, &rays);
+}
+
+/// The packet queries against the single-ray ones (which `check_ray` holds to the oracle), ray
+/// by ray, bit for bit: closest hit within `t_max` and any hit, for no limit and for a limit
+/// that cuts through the scene (the median distance of the hits). Returns the hits.
+fn check_packets<T: Real>(accel: &Accel<Mt<T>>, rays: &[Ray<T>]) -> usize {
+    let single: Vec<_> = rays.iter().map(|r| accel.closest_hit(r)).collect();
+    let mut ts: Vec<T> = single.iter().flatten().map(|h| h.t).collect();
+    ts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    let median = ts.get(ts.len() / 2).copied().unwrap_or(T::ONE);
+    let mut closest = vec![None; rays.len()];
+    let mut any = vec![false; rays.len()];
+    for t_max in [T::INFINITY, median, T::from_f64(f64::NAN)] {
+        accel.closest_hits_packet(rays, t_max, &mut closest);
+        accel.any_hits_packet(rays, t_max, &mut any);
+        for (i, ray) in rays.iter().enumerate() {
+            let want = accel.closest_hit_within(ray, t_max);
+            assert_eq!(closest[i], want, "ray {i} {ray:?}, t_max {t_max:?}");
+            assert_eq!(any[i], accel.any_hit(ray, t_max), "ray {i} {ray:?}, t_max {t_max:?}");
+        }
+    }
+    ts.len()
+}
+
+/// A pinhole camera's rays from `eye` through a `side x side` grid of points `at + x u + y v`
+/// (`x`, `y` in `[-1, 1]`), in 8 x 8 blocks as a renderer sends them.
+fn pinhole(eye: [f64; 3], at: [f64; 3], u: [f64; 3], v: [f64; 3], side: u32) -> Vec<Ray<f64>> {
+    let mut rays = Vec::new();
+    let coord = |i: u32| 2.0 * (f64::from(i) + 0.5) / f64::from(side) - 1.0;
+    for bj in (0..side).step_by(8) {
+        for bi in (0..side).step_by(8) {
+            for j in bj..(bj + 8).min(side) {
+                for i in bi..(bi + 8).min(side) {
+                    let (x, y) = (coord(i), coord(j));
+                    let p: [f64; 3] = core::array::from_fn(|k| at[k] + x * u[k] + y * v[k]);
+                    rays.push(Ray::new(eye, sub(p, eye)));
+                }
+            }
+        }
+    }
+    rays
+}
+
+#[test]
+fn packets_match_single_rays_on_soups() {
+    let mut rng = Pcg64::seed_from_u64(17);
+    let mut hits = 0;
+    for n in [1, 9, 100, 3000] {
+        let tris64 = soup(&mut rng, n);
+        // Incoherent rays (every octant in every chunk: wide intervals, small groups), then a
+        // camera looking at the soup from each side, with non-finite rays in its packets.
+        let mut sets = vec![rays(&mut rng, 700, &tris64)];
+        for eye in [[0.1, 0.2, -5.0], [4.0, -3.0, 0.5], [0.0, 6.0, 0.0]] {
+            let mut cam = pinhole(eye, [0.0; 3], [1.2, 0.0, 0.0], [0.0, 0.0, 1.2], 24);
+            cam[5].dir[0] = f64::NAN;
+            cam[70].origin[2] = f64::INFINITY;
+            cam[71].dir = [0.0; 3];
+            sets.push(cam);
+        }
+        for rays in &sets {
+            let tris: Vec<Triangle<f32>> = tris64.iter().map(Triangle::cast).collect();
+            hits += check_packets(&Accel::build(mt::<f64>(), &tris64), rays);
+            let rays32: Vec<Ray<f32>> = rays.iter().map(Ray::cast).collect();
+            hits += check_packets(&Accel::build(mt::<f32>(), &tris), &rays32);
+        }
+    }
+    assert!(hits > 2000, "{hits} hits");
+}
+
+/// The closed box of `exact_ties_on_shared_edges_and_vertices` seen by cameras whose rays pass
+/// exactly through its grid's vertices and edge midpoints: ties in every packet.
+#[test]
+fn packets_keep_exact_ties() {
+    let (nx, ny, nz) = (8, 6, 4);
+    let tris = grid_box(nx, ny, nz);
+    let tris32: Vec<Triangle<f32>> = tris.iter().map(Triangle::cast).collect();
+    let (a64, a32) = (Accel::build(mt::<f64>(), &tris), Accel::build(mt::<f32>(), &tris32));
+    let mut hits = 0;
+    for eye in [[3.0, 2.0, -5.0], [-4.0, 3.0, 1.0], [11.0, -1.0, 9.0], [4.0, 3.0, 2.0]] {
+        // Every half-integer point of the z = 0 and x = 0 faces, from one eye: exact
+        // directions, on the shared edges and vertices of the triangles.
+        let mut rays = Vec::new();
+        for (a, b) in (0..=2 * nx).flat_map(|a| (0..=2 * ny).map(move |b| (a, b))) {
+            rays.push([f64::from(a) * 0.5, f64::from(b) * 0.5, 0.0]);
+        }
+        for (b, c) in (0..=2 * ny).flat_map(|b| (0..=2 * nz).map(move |c| (b, c))) {
+            rays.push([0.0, f64::from(b) * 0.5, f64::from(c) * 0.5]);
+        }
+        let rays: Vec<Ray<f64>> = rays.into_iter().map(|p| Ray::new(eye, sub(p, eye))).collect();
+        for ray in &rays {
+            hits += usize::from(check_ray(&a64, &tris, ray));
+        }
+        hits += check_packets(&a64, &rays);
+        check_packets(&a32, &rays.iter().map(Ray::cast).collect::<Vec<_>>());
+    }
+    assert!(hits > 1000, "{hits}");
+}
+
+#[test]
+fn packets_match_single_rays_on_real_meshes() {
+    for name in ["stanford-bunny.obj", "teapot.obj"] {
+        let mesh = shared_mesh(name);
+        let (c, r) = mesh.bounding_sphere();
+        let mut hits = 0;
+        // Front, side and grazing views, a frame of 32 x 32 rays each.
+        for (dir, up) in [([0.0, 0.0, -1.0], [0.0, 1.0, 0.0]), ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0])] {
+            let eye = core::array::from_fn(|k| c[k] + 2.5 * r * dir[k]);
+            let side = cross(dir, up);
+            let u = side.map(|x| x * r);
+            let v = up.map(|x| x * r);
+            let rays = pinhole(eye, c, u, v, 32);
+            hits += check_packets(&Accel::build(mt::<f64>(), &mesh.triangles()), &rays);
+            let rays32: Vec<Ray<f32>> = rays.iter().map(Ray::cast).collect();
+            hits += check_packets(&Accel::build(mt::<f32>(), &mesh.triangles()), &rays32);
+        }
+        assert!(hits > 500, "{name}: {hits}");
+    }
 }

@@ -7,7 +7,8 @@
 //! Then:
 //!
 //! - **Each configuration on its own**: the BVH queries equal brute force on a sample of
-//!   pixels (every pixel of the small scenes), any-hit and closest-hit agree on every pixel,
+//!   pixels (every pixel of the small scenes), the packet queries equal the single-ray ones in
+//!   every bit on every pixel, any-hit and closest-hit agree on every pixel,
 //!   the render loop's frames equal the per-pixel queries, and every reported hit is checked
 //!   against an independent `f64` computation: its distance against the plane of the
 //!   triangle the kernel was given (to the tolerance, `common::Config::depth_tolerance`),
@@ -240,6 +241,7 @@ fn nearest(hits: &[(u32, f64)]) -> Option<(u32, f64)> {
 fn check_alone(scene: &Scene, t: &Traced, failures: &mut Vec<String>) {
     let name = t.config.name();
     failures.extend(t.bvh_mismatches.iter().take(SHOWN).map(|m| format!("BVH: {m}")));
+    failures.extend(t.packet_mismatches.iter().take(SHOWN).map(|m| format!("packets: {m}")));
     let mut bad = Vec::new();
     for p in 0..scene.pixels() {
         let hit = t.hits[p];

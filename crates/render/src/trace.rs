@@ -20,6 +20,14 @@
 //! Only the nearest hit's triangle is looked up for normals; traversal computes nothing but
 //! `t` and barycentrics.
 //!
+//! # Packets
+//!
+//! Each tile's rays are traced together, in packets of 8 x 8 pixels
+//! ([`Accel::closest_hits_packet`], [`Accel::any_hits_packet`]): the rays of a tile leave one
+//! eye in nearly the same direction, so a packet tests each node of the tree once where single
+//! rays test it once each. The answers are those of [`Accel::closest_hit`] and
+//! [`Accel::any_hit`] per pixel, bit for bit, ties included; only the speed differs.
+//!
 //! # Parallelism and progress
 //!
 //! The image is cut into bands of at most [`TILE`] rows, each traced as a row of
@@ -29,10 +37,8 @@
 //! `progress` is called with the number of pixels just finished (from any thread), so a
 //! caller can drive a progress bar; the calls add up to `width * height`.
 
-use core::ops::Range;
-
 use intersect::vec3::{cross, dot, sub};
-use intersect::{Intersector, Ray, Real};
+use intersect::{Hit, Intersector, Ray, Real};
 use rayon::prelude::*;
 
 use crate::camera::{Camera, PixelRays};
@@ -79,20 +85,27 @@ pub fn render_frame<I: Intersector>(
     // The same rays as `camera.ray(i, j, w, h)`, bit for bit, at a fraction of the cost.
     let rays = camera.pixel_rays(w, h);
     let light = light_direction(camera);
+    // Every mode traces its tiles in packets (the rays of a tile leave one eye: coherent);
+    // the answers are those of single rays, bit for bit.
+    let closest = |rays: &[Ray<I::Real>], out: &mut [Option<Hit<I::Real>>]| {
+        accel.closest_hits_packet(rays, inf, out);
+    };
     match frame.data_mut() {
         FrameData::Alpha(px) => {
-            fill_traced(px, w, h, progress, &rays, |ray, _, _| u8::from(accel.any_hit(ray, inf)))
+            let any =
+                |rays: &[Ray<I::Real>], out: &mut [bool]| accel.any_hits_packet(rays, inf, out);
+            fill_traced(px, w, h, progress, &rays, any, |_, _, hit| u8::from(hit));
         }
-        FrameData::Depth(px) => fill_traced(px, w, h, progress, &rays, |ray, _, _| {
-            accel.closest_hit(ray).map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
+        FrameData::Depth(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
+            hit.map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
         }),
-        FrameData::Normal(px) => fill_traced(px, w, h, progress, &rays, |ray, _, _| {
-            accel.closest_hit(ray).map_or([0.0; 3], |hit| {
+        FrameData::Normal(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
+            hit.map_or([0.0; 3], |hit| {
                 geometric_normal(mesh, hit.prim as usize).map_or([0.0; 3], |n| n.map(|c| c as f32))
             })
         }),
-        FrameData::Shade(px) => fill_traced(px, w, h, progress, &rays, |ray, i, j| {
-            accel.closest_hit(ray).map_or([0.0; 3], |hit| {
+        FrameData::Shade(px) => fill_traced(px, w, h, progress, &rays, closest, |i, j, hit| {
+            hit.map_or([0.0; 3], |hit| {
                 let dir = rays.direction(i, j);
                 let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
                 let n = shading_normal(mesh, hit.prim as usize, u, v, dir);
@@ -100,11 +113,15 @@ pub fn render_frame<I: Intersector>(
                 [AMBIENT + (1.0 - AMBIENT) * lambert; 3]
             })
         }),
-        FrameData::Prim(px) => fill_traced(px, w, h, progress, &rays, |ray, _, _| {
-            accel.closest_hit(ray).map_or(u32::MAX, |hit| hit.prim)
+        FrameData::Prim(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
+            hit.map_or(u32::MAX, |hit| hit.prim)
         }),
     }
 }
+
+/// Side of the square blocks of pixels whose rays are traced as one packet (the packet size
+/// of `bvh`, [`bvh::PACKET`], is 8 x 8).
+const BLOCK: u32 = 8;
 
 /// Computes every pixel of a `w x h` row-major buffer with `pixel(i, j)`, in parallel bands
 /// of tiles, reporting finished pixels to `progress`.
@@ -115,40 +132,60 @@ pub(crate) fn fill<P: Send>(
     progress: &(impl Fn(usize) + Sync),
     pixel: impl Fn(u32, u32) -> P + Sync,
 ) {
-    fill_rows(px, w, h, progress, |j, columns, out| {
-        for (i, p) in columns.zip(out) {
-            *p = pixel(i, j);
+    tiles(px, w, h, progress, |rows, (i0, i1), (j0, rows_here)| {
+        for dj in 0..rows_here {
+            let row = &mut rows[(dj * w) as usize..][..w as usize];
+            for i in i0..i1 {
+                row[i as usize] = pixel(i, j0 + dj);
+            }
         }
     });
 }
 
-/// [`fill`] with `pixel(ray, i, j)` given the camera ray of each pixel, made a tile's row at a
-/// time ([`PixelRays::row_into`]: the same rays as `Camera::ray`, lane by lane).
-fn fill_traced<P: Send, T: Real>(
+/// [`fill`] by whole tiles: the camera rays of each tile ([`PixelRays::row_into`], the same
+/// rays as `Camera::ray`, a row of a block at a time) are handed to `trace` at once, in
+/// [`BLOCK`] x [`BLOCK`] blocks, and each pixel is `pixel(i, j, its answer)`.
+fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
     px: &mut [P],
     w: u32,
     h: u32,
     progress: &(impl Fn(usize) + Sync),
     rays: &PixelRays,
-    pixel: impl Fn(&Ray<T>, u32, u32) -> P + Sync,
+    trace: impl Fn(&[Ray<T>], &mut [Q]) + Sync,
+    pixel: impl Fn(u32, u32, Q) -> P + Sync,
 ) {
-    fill_rows(px, w, h, progress, |j, columns, out| {
-        let mut segment = [Ray::new([T::ZERO; 3], [T::ZERO; 3]); TILE as usize];
-        rays.row_into(j, columns.clone(), &mut segment);
-        for ((i, p), ray) in columns.zip(out).zip(&segment) {
-            *p = pixel(ray, i, j);
+    tiles(px, w, h, progress, |rows, (i0, i1), (j0, rows_here)| {
+        let mut at = Vec::with_capacity((TILE * TILE) as usize);
+        let mut tile_rays = Vec::with_capacity((TILE * TILE) as usize);
+        let mut segment = [Ray::new([T::ZERO; 3], [T::ZERO; 3]); BLOCK as usize];
+        for bj in (0..rows_here).step_by(BLOCK as usize) {
+            for bi in (i0..i1).step_by(BLOCK as usize) {
+                let columns = bi..(bi + BLOCK).min(i1);
+                let n = columns.len();
+                for dj in bj..(bj + BLOCK).min(rows_here) {
+                    rays.row_into(j0 + dj, columns.clone(), &mut segment[..n]);
+                    tile_rays.extend_from_slice(&segment[..n]);
+                    at.extend(columns.clone().map(|i| (i, dj)));
+                }
+            }
+        }
+        let mut answers = vec![Q::default(); tile_rays.len()];
+        trace(&tile_rays, &mut answers);
+        for (&(i, dj), &answer) in at.iter().zip(&answers) {
+            rows[(dj * w + i) as usize] = pixel(i, j0 + dj, answer);
         }
     });
 }
 
-/// The tile loop of [`fill`]: `segment(j, columns, out)` fills the pixels `columns` (at most
-/// [`TILE`]) of row `j`, `out`.
-fn fill_rows<P: Send>(
+/// Cuts a `w x h` row-major buffer into bands of tiles shared among the threads; `tile` fills
+/// one tile of its band (`rows`, the band's rows): columns `i0..i1`, the band's `rows_here`
+/// rows from image row `j0`. Reports each finished tile to `progress`.
+fn tiles<P: Send>(
     px: &mut [P],
     w: u32,
     h: u32,
     progress: &(impl Fn(usize) + Sync),
-    segment: impl Fn(u32, Range<u32>, &mut [P]) + Sync,
+    tile: impl Fn(&mut [P], (u32, u32), (u32, u32)) + Sync,
 ) {
     debug_assert_eq!(px.len(), w as usize * h as usize);
     // Short bands for short images, so that every thread gets a few to balance the load.
@@ -159,10 +196,7 @@ fn fill_rows<P: Send>(
         let rows_here = rows.len() as u32 / w;
         for i0 in (0..w).step_by(TILE as usize) {
             let i1 = (i0 + TILE).min(w);
-            for dj in 0..rows_here {
-                let row = &mut rows[(dj * w) as usize..][..w as usize];
-                segment(j0 + dj, i0..i1, &mut row[i0 as usize..i1 as usize]);
-            }
+            tile(rows, (i0, i1), (j0, rows_here));
             progress(((i1 - i0) * rows_here) as usize);
         }
     });
@@ -203,7 +237,7 @@ fn normalize(v: [f64; 3]) -> Option<[f64; 3]> {
 mod tests {
     use std::sync::atomic::{AtomicUsize, Ordering};
 
-    use intersect::{Algebra, Guarantees, Method, Ray, Triangle, TriangleHit};
+    use intersect::{Algebra, Guarantees, Method, Triangle, TriangleHit};
 
     use super::*;
     use crate::frame::Mode;

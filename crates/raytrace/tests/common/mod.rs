@@ -194,6 +194,10 @@ pub struct Traced {
     pub hits: Vec<Option<Hit<f64>>>,
     /// Pixels where the BVH queries differ from the brute-force ones, one line each.
     pub bvh_mismatches: Vec<String>,
+    /// Pixels where the packet queries ([`Accel::closest_hits_packet`],
+    /// [`Accel::any_hits_packet`], on the frame's rays in 8 x 8 blocks) differ in any bit from
+    /// the single-ray ones, one line each.
+    pub packet_mismatches: Vec<String>,
 }
 
 /// Renders a scene through one back end: the `alpha`, `depth` and `prim` frames, the closest
@@ -238,6 +242,11 @@ impl Job for Trace<'_> {
                 bvh_vs_brute_force(&accel, &ray(p)).map(|e| format!("{name} {p}: {e}"))
             })
             .collect();
+        let packet_mismatches =
+            packets_vs_single_rays(&accel, &(0..s.pixels()).map(ray).collect::<Vec<_>>(), w)
+                .into_iter()
+                .map(|e| format!("{name} {e}"))
+                .collect();
         Traced {
             config: self.config,
             alpha: alpha.into_iter().map(|a| a != 0).collect(),
@@ -245,8 +254,43 @@ impl Job for Trace<'_> {
             prim_frame,
             hits,
             bvh_mismatches,
+            packet_mismatches,
         }
     }
+}
+
+/// Where the packet queries on a `w x h` frame's rays (row-major) differ from the single-ray
+/// queries, exactly: closest hits (distance, barycentrics, triangle) and any hits. The rays are
+/// handed over in 8 x 8 blocks, as `render_frame` does.
+fn packets_vs_single_rays<I: Intersector>(
+    accel: &Accel<I>,
+    rays: &[Ray<I::Real>],
+    w: u32,
+) -> Vec<String> {
+    let (w, h) = (w as usize, rays.len() / w as usize);
+    let order: Vec<usize> = (0..h.div_ceil(8) * w.div_ceil(8))
+        .flat_map(|b| {
+            let (bi, bj) = (b % w.div_ceil(8) * 8, b / w.div_ceil(8) * 8);
+            (bj..(bj + 8).min(h)).flat_map(move |j| (bi..(bi + 8).min(w)).map(move |i| j * w + i))
+        })
+        .collect();
+    let blocked: Vec<Ray<I::Real>> = order.iter().map(|&p| rays[p]).collect();
+    let inf = <I::Real as Real>::INFINITY;
+    let mut closest = vec![None; rays.len()];
+    let mut any = vec![false; rays.len()];
+    accel.closest_hits_packet(&blocked, inf, &mut closest);
+    accel.any_hits_packet(&blocked, inf, &mut any);
+    let mut bad = Vec::new();
+    for (k, &p) in order.iter().enumerate() {
+        let single = accel.closest_hit(&rays[p]);
+        if closest[k] != single || any[k] != accel.any_hit(&rays[p], inf) {
+            bad.push(format!(
+                "pixel {p}: packet {:?} / any {}, single ray {single:?}",
+                closest[k], any[k]
+            ));
+        }
+    }
+    bad
 }
 
 /// Renders `scene` through every configuration.
