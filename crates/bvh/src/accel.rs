@@ -226,10 +226,13 @@ impl<I: Intersector> Accel<I> {
         t_max: I::Real,
         accept: impl Fn(I::Real) -> bool,
     ) -> Option<Hit<I::Real>> {
-        let ray_data = self.intersector.prepare_ray(ray);
+        // Prepared when the ray first reaches a leaf (the same bits as up front): rays that
+        // miss the mesh's boxes never pay for it.
+        let mut ray_data = None;
         let mut best: Option<Hit<I::Real>> = None;
         self.bvh.closest(ray, t_max, |slots, limit| {
-            self.closest_in_leaf(slots, ray, &ray_data, limit, &accept, &mut best);
+            let data = ray_data.get_or_insert_with(|| self.intersector.prepare_ray(ray));
+            self.closest_in_leaf(slots, ray, data, limit, &accept, &mut best);
         });
         best
     }
@@ -319,9 +322,11 @@ impl<I: Intersector> Accel<I> {
     #[must_use]
     #[inline]
     pub fn any_hit(&self, ray: &Ray<I::Real>, t_max: I::Real) -> bool {
-        let ray_data = self.intersector.prepare_ray(ray);
+        // Prepared lazily, as in `closest_where`.
+        let mut ray_data = None;
         self.bvh.any(ray, t_max, |slots| {
-            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &ray_data, t_max))
+            let data = ray_data.get_or_insert_with(|| self.intersector.prepare_ray(ray));
+            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, data, t_max))
         })
     }
 
