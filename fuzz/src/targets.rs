@@ -5,6 +5,8 @@
 //! - an error message is one line (no line break);
 //! - an accepted `.npy` array has `rows * 6` values, and writing it and reading it back gives
 //!   the same bits (`f32` files: every value is exactly an `f32`);
+//! - an accepted `.npz` rays file (read from a file, as `raycast` reads it, a chunk at a time)
+//!   gives exactly the values its shape calls for;
 //! - an accepted mesh has a triangle, every index names a vertex, every coordinate and normal
 //!   component is finite, and there is one normal triple per triangle.
 
@@ -40,6 +42,7 @@ const GZ: usize = 1032;
 /// Every target. Adding a reader is one row here and a folder of seeds in `fuzz/corpus/`.
 pub const TARGETS: &[Target] = &[
     Target { name: "npy", run: npy_rays, tokens: NPY_TOKENS, memory_per_byte: 64 },
+    Target { name: "npz", run: npz_rays, tokens: NPZ_TOKENS, memory_per_byte: 64 },
     Target { name: "obj", run: |b| mesh(Obj, b), tokens: OBJ_TOKENS, memory_per_byte: MESH },
     Target { name: "ply", run: |b| mesh(Ply, b), tokens: PLY_TOKENS, memory_per_byte: MESH },
     Target { name: "stl", run: |b| mesh(Stl, b), tokens: STL_TOKENS, memory_per_byte: MESH },
@@ -203,6 +206,21 @@ const GLTF_TOKENS: &[&[u8]] = &[
     b"\"",
 ];
 
+/// Zip records (local header, central directory, end of directory, ZIP64 end) and `.npy`
+/// headers, for `.npz` archives.
+const NPZ_TOKENS: &[&[u8]] = &[
+    b"PK\x03\x04",
+    b"PK\x01\x02",
+    b"PK\x05\x06",
+    b"PK\x06\x06",
+    b"PK\x06\x07",
+    b"rays.npy",
+    b"\x93NUMPY\x01\x00",
+    b"{'descr': '<f4', 'fortran_order': False, 'shape': (2, 8), }",
+    b"\x00\x00\x00\x00",
+    b"\xff\xff\xff\xff",
+];
+
 /// Bytes that make gzip headers and deflate blocks (the readers' own tokens are in the
 /// compressed stream only by chance: the plain targets fuzz the text inside).
 const GZ_TOKENS: &[&[u8]] = &[
@@ -235,6 +253,40 @@ fn npy_rays(bytes: &[u8]) -> Outcome {
     assert_eq!((back.rows, back.was_f32), (m.rows, m.was_f32), "read back differently");
     assert_eq!(bits(&back.values), bits(&m.values), "values changed when read back");
     Ok(format!("{} array", if m.was_f32 { "f32" } else { "f64" }))
+}
+
+/// `.npz` rays as `raycast` reads them: written to a file (the reader seeks), opened, and
+/// read in chunks of 1000 rays (the files' names differ by process only: one run at a time).
+fn npz_rays(bytes: &[u8]) -> Outcome {
+    use render::cast::files::RaysFile;
+    let path = std::env::temp_dir().join(format!("wedge-fuzz-{}.npz", std::process::id()));
+    std::fs::write(&path, bytes).expect("writing the input to a temporary file");
+    let opened = RaysFile::open(&path, None);
+    // Open files outlive their name (Linux): leave nothing in the temporary directory.
+    std::fs::remove_file(&path).expect("removing the temporary file");
+    let mut file = match opened {
+        Ok(file) => file,
+        Err(e) => return Err(one_line(&e)),
+    };
+    let (rows, columns, was_f32) = (file.rows(), file.columns(), file.was_f32());
+    assert!(columns == 6 || columns == 8, "{columns} columns accepted");
+    let mut reader = match file.rows_reader() {
+        Ok(reader) => reader,
+        Err(e) => return Err(one_line(&e)),
+    };
+    let (mut values, mut read) = (Vec::new(), 0);
+    loop {
+        match reader.next_rows(1000, &mut values) {
+            Ok(0) => break,
+            Ok(n) => {
+                assert_eq!(values.len(), n * columns, "{} values for {n} rows", values.len());
+                read += n;
+            }
+            Err(e) => return Err(one_line(&e)),
+        }
+    }
+    assert_eq!(read, rows, "{read} rows read of {rows}");
+    Ok(format!("{} npz array", if was_f32 { "f32" } else { "f64" }))
 }
 
 /// A mesh file as `Mesh::load` reads one of `format` (without a glTF's external buffers).

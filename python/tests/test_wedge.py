@@ -238,3 +238,25 @@ def test_readme_example_runs(bunny_path, capsys, monkeypatch):
     printed = capsys.readouterr().out
     assert re.search(r"\d+ of \d+ pixels differ", printed), printed
     assert re.search(r"\d+ of \d+ rays differ", printed), printed
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_raycast_reads_and_writes_every_layout_numpy_does(tmp_path, bunny_path, bunny, dtype):
+    rays = bunny_rays(bunny, 3000, seed=3, segments=True).astype(dtype)
+    expected = raycast_hits(tmp_path, bunny_path, rays)
+    ext = "f32" if dtype == np.float32 else "f64"
+    written = {
+        "savez.npz": lambda p: np.savez(p, rays),
+        "compressed.npz": lambda p: np.savez_compressed(p, rays=rays, other=np.zeros(3)),
+        f"raw.{ext}": rays.tofile,
+    }
+    for name, save in written.items():
+        path = tmp_path / name
+        save(path)
+        options = () if name.endswith("npz") else ("--ray-columns", "8")
+        for out, load in [
+            ("hits.npz", lambda p: np.load(p)["hits"]),
+            ("hits.f64", lambda p: np.fromfile(p, dtype="<f8").reshape(-1, 4)),
+        ]:
+            run("raycast", bunny_path, path, tmp_path / out, "--quiet", *options)
+            assert same_bits(load(tmp_path / out), expected), (name, out)

@@ -67,6 +67,8 @@ pub struct Stats {
     pub precision: String,
     /// Threads used for tracing.
     pub threads: usize,
+    /// The process's peak resident memory so far, in bytes ([`peak_memory_bytes`]).
+    pub peak_memory_bytes: Option<u64>,
     /// The camera of a rendered frame (`raytrace`), however it was placed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub camera: Option<CameraRecord>,
@@ -163,6 +165,18 @@ pub fn diff_path(output: &Path, a: &str, b: &str) -> anyhow::Result<PathBuf> {
     Ok(output.with_file_name(name))
 }
 
+/// The peak resident memory of this process, in bytes: Linux's `VmHWM` of
+/// `/proc/self/status`, which counts this program's memory only (`getrusage`'s `ru_maxrss`
+/// would also count the memory of the process that started it, from before the exec).
+/// `None` where the file does not exist.
+#[must_use]
+pub fn peak_memory_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find_map(|l| l.strip_prefix("VmHWM:"))?;
+    let kib: u64 = line.trim().strip_suffix("kB")?.trim().parse().ok()?;
+    kib.checked_mul(1024)
+}
+
 impl Stats {
     /// Figures from the measured durations; `mrays_per_s` is `rays / trace`, with the trace
     /// time counted as at least a nanosecond so that it stays finite.
@@ -188,6 +202,7 @@ impl Stats {
             backend: backend.to_owned(),
             precision: precision.name().to_owned(),
             threads,
+            peak_memory_bytes: peak_memory_bytes(),
             camera: None,
             record: None,
             compare: None,

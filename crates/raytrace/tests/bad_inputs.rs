@@ -132,8 +132,16 @@ fn table() -> Vec<Row> {
             2,
             &["hits would overwrite the rays"],
         ),
-        row(Raycast, &["square.obj", "rays.npy", "square.obj"], 2, &["use a .npy extension"]),
-        row(Raycast, &["square.obj", "rays.npy", "sub"], 2, &["use a .npy extension"]),
+        row(Raycast, &["square.obj", "rays.npy", "square.obj"], 2, &[".npy, .npz or .f64"]),
+        row(Raycast, &["square.obj", "rays.npy", "sub"], 2, &[".npy, .npz or .f64"]),
+        row(Raycast, &["square.obj", "rays.npy", "h.f32"], 2, &["h.f32", "float64"]),
+        // Rays in the other layouts.
+        row(Raycast, &["square.obj", "two.npz", "h.npy"], 1, &["two.npz", "2 arrays"]),
+        row(Raycast, &["square.obj", "broken.npz", "h.npy"], 1, &["broken.npz", "cannot be read"]),
+        row(Raycast, &["square.obj", "odd.f32", "h.npy"], 1, &["odd.f32", "not a whole number"]),
+        row(Raycast, &["square.obj", "nul.f64", "h.npy"], 1, &["nul.f64", "not a whole number"]),
+        row(Raycast, &["square.obj", "rays.npy", "h.npy", "--ray-columns", "8"], 1, &["6 columns"]),
+        row(Raycast, &["square.obj", "rays.npy", "h.npy", "--ray-columns", "7"], 2, &["6, 8"]),
         // --stats.
         row(Raytrace, &["square.obj", "o.png", "8", "8", "--stats", "square.obj"], 2, &[".json"]),
         row(Raytrace, &["square.obj", "out.npy", "8", "8", "--stats", "out.npy"], 2, &[".json"]),
@@ -237,6 +245,15 @@ fn fixtures(dir: &Path) {
     let mut rays = Vec::new();
     npy::write(&mut rays, &[1, 6], [0.0f32, 0.0, 0.0, 0.0, 0.0, 1.0]).unwrap();
     put("rays.npy", &rays);
+    put("odd.f32", &[0; 4 * 7]);
+    put("nul.f64", &[0; 5]);
+    put("broken.npz", b"PK\x03\x04 and no more of a zip archive");
+    let mut two = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    for name in ["a.npy", "b.npy"] {
+        two.start_file(name, zip::write::SimpleFileOptions::default()).unwrap();
+        std::io::Write::write_all(&mut two, &rays).unwrap();
+    }
+    put("two.npz", &two.finish().unwrap().into_inner());
     std::fs::hard_link(dir.join("rays.npy"), dir.join("hard.npy")).unwrap();
     put("out.npy", b"an earlier image");
     put("old.json", OLD_STATS.as_bytes());

@@ -269,6 +269,7 @@ fn stats_json_has_exactly_the_documented_keys() {
         "machine",
         "mrays_per_s",
         "output",
+        "peak_memory_bytes",
         "precision",
         "program",
         "rays",
@@ -319,6 +320,9 @@ fn stats_json_has_exactly_the_documented_keys() {
     assert_eq!(v["triangles"], 2);
     assert_eq!(v["rays"], 80);
     assert_eq!(v["threads"], 2);
+    // Linux: at least the program's own code is resident; far less than a gigabyte here.
+    let peak = v["peak_memory_bytes"].as_u64().unwrap();
+    assert!((1 << 20..1 << 30).contains(&peak), "{peak}");
     assert_eq!(v["backend"], "la-mt");
     assert_eq!(v["precision"], "f64");
     for k in ["load_ms", "build_ms", "trace_ms", "write_ms", "wall_ms", "mrays_per_s"] {
@@ -604,7 +608,7 @@ fn bad_raycast_inputs_fail_with_one_line_and_leave_nothing() {
         (vec![&obj, &fortran, &hits], "Fortran"),
         (vec![&obj, &text_file, &hits], "not a NumPy"),
         (vec![&no_obj, &good, &hits], "no.obj"),
-        (vec![&obj, &good, &csv], ".npy extension"),
+        (vec![&obj, &good, &csv], ".npy, .npz or .f64 extension"),
         (vec![&obj, &good, &"/nonexistent/hits.npy"], "/nonexistent/hits.npy"),
     ];
     for (args, needle) in cases {

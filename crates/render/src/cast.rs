@@ -17,6 +17,8 @@
 //! the unit geometric normal; a miss is [`MISS`]. The any-hit query is `1` or `0`, then
 //! optionally the index of a triangle hit (`-1` on a miss).
 
+pub mod files;
+
 use bvh::accel::Accel;
 use intersect::{Intersector, Ray, Real};
 use rayon::prelude::*;

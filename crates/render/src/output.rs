@@ -261,10 +261,27 @@ impl AtomicFile {
         self,
         write: impl FnOnce(&mut BufWriter<&File>) -> io::Result<()>,
     ) -> Result<Written, OutputError> {
-        let fail = |error| OutputError::Write { path: self.path.clone(), error };
+        self.write_streamed(|w, fail| write(w).map_err(fail))
+    }
+
+    /// Like [`AtomicFile::write`] for work that can also fail for reasons of its own (reading
+    /// an input while the output is written a piece at a time): `write`'s error `E` is
+    /// returned as it is, while an I/O error of the file is reported by `write` through the
+    /// `fail` it is given, which names the file.
+    ///
+    /// # Errors
+    ///
+    /// `write`'s error, or the flush's as an [`OutputError::Write`] converted to `E`; the
+    /// temporary file is removed.
+    pub fn write_streamed<E: From<OutputError>>(
+        self,
+        write: impl FnOnce(&mut BufWriter<&File>, &WriteFailed) -> Result<(), E>,
+    ) -> Result<Written, E> {
+        let path = self.path.clone();
+        let fail = move |error| OutputError::Write { path: path.clone(), error };
         let mut w = BufWriter::new(self.temp.as_file());
-        write(&mut w).map_err(fail)?;
-        w.flush().map_err(fail)?;
+        write(&mut w, &fail)?;
+        w.flush().map_err(&fail)?;
         drop(w);
         Ok(Written { path: self.path, temp: self.temp, entry: self.entry })
     }
@@ -316,6 +333,9 @@ impl AtomicFile {
         }
     }
 }
+
+/// Makes an I/O error of an [`AtomicFile`] an [`OutputError::Write`] naming it.
+pub type WriteFailed = dyn Fn(io::Error) -> OutputError;
 
 /// A temporary file written completely, waiting for [`commit_all`] (or [`Written::commit`])
 /// to put it in place; dropped, it is removed.

@@ -1,22 +1,25 @@
 //! `raycast MESH RAYS.npy HITS.npy [options]`: traces an array of rays through a mesh.
 //!
-//! See `--help` for the array formats.
+//! See `--help` for the array formats. The rays are read, traced and their hits written a
+//! chunk at a time ([`render::cast::files`]), so arrays larger than memory trace in bounded
+//! memory.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::{Duration, Instant, SystemTime};
 
-use anyhow::Context as _;
 use backends::{Backend, Job, Precision, dispatch};
 use bvh::accel::Accel;
 use clap::Parser;
+use clap::builder::{PossibleValuesParser, TypedValueParser as _};
 use intersect::{Intersector, Real};
 use raytrace::args::{parse_threads, resolve_threads};
 use raytrace::progress::Progress;
 use raytrace::record::{OutputRecord, Record};
 use raytrace::{Named, Stats, Timings, UsageError};
+use render::cast::files::{HitsLayout, HitsWriter, RAYS_PER_CHUNK, RaysError, RaysFile};
 use render::cast::{self, Columns};
-use render::output::{AtomicFile, npy};
+use render::output::{AtomicFile, Written};
 use scene::Mesh;
 
 /// Trace your own rays through a triangle mesh (OBJ, PLY, STL, glTF/GLB; .obj.gz, .ply.gz).
@@ -24,9 +27,13 @@ use scene::Mesh;
 /// RAYS is a NumPy .npy array of float32 or float64 (little-endian, C order) with shape
 /// (N, 6): origin x, y, z, direction x, y, z; or (N, 8), adding t_min and t_max: only hits
 /// with t_min <= t <= t_max count (a segment, e.g. a shadow ray). Directions need not be unit
-/// length; t is measured in units of the direction, and a hit always has t > 0.
+/// length; t is measured in units of the direction, and a hit always has t > 0. RAYS may also
+/// be a .npz archive (np.savez or np.savez_compressed) holding one such array, or one named
+/// 'rays', or raw little-endian values with no header, .f32 or .f64, 6 values per ray or
+/// --ray-columns 8.
 ///
-/// HITS is written as float64 with shape (N, 4): t, triangle index, u, v (the hit point is
+/// HITS is written as float64, as .npy, as .npz (the array 'hits', deflated) or as raw .f64
+/// rows, with shape (N, 4): t, triangle index, u, v (the hit point is
 /// (1 - u - v) a + u b + v c of the triangle's vertices a, b, c). A miss is
 /// (+inf, -1, NaN, NaN). --with point,normal adds the hit point's x, y, z and the triangle's
 /// unit normal (b - a) x (c - a), normalised (NaN on a miss), in that order. With --any-hit,
@@ -34,17 +41,27 @@ use scene::Mesh;
 /// adds the index of a triangle it hits (the first found, not the nearest; -1 on a miss). A
 /// ray with a NaN or infinite origin or direction component, a zero direction, or a NaN
 /// t_min or t_max, is a miss. Triangle indices count the file's faces in order, each n-gon
-/// fanned into n - 2 triangles from its first vertex.
+/// fanned into n - 2 triangles from its first vertex. Rays are read, traced and written a
+/// chunk at a time, so arrays larger than memory can be traced.
 #[derive(Parser, Debug)]
 #[command(name = "raycast", version)]
 struct Cli {
     /// The mesh: .obj, .ply, .stl, .gltf, .glb, .obj.gz or .ply.gz.
     input: PathBuf,
-    /// The rays: .npy, float32 or float64, shape (N, 6), or (N, 8) with t_min, t_max.
+    /// The rays: .npy or .npz, float32 or float64, shape (N, 6), or (N, 8) with t_min, t_max;
+    /// or raw .f32 or .f64 values.
     rays: PathBuf,
-    /// Where to write the hits: .npy, float64, shape (N, 4), or (N, 1) with --any-hit, plus
-    /// the --with columns (replaced if it exists; never the rays or the mesh).
+    /// Where to write the hits: .npy, .npz or raw .f64, float64, shape (N, 4), or (N, 1) with
+    /// --any-hit, plus the --with columns (replaced if it exists; never the rays or the mesh).
     hits: PathBuf,
+    /// Values per ray in raw .f32 or .f64 RAYS: 6, or 8 with t_min, t_max [default: 6]. With
+    /// .npy or .npz RAYS, checked against the array's shape.
+    #[arg(
+        long,
+        value_name = "6|8",
+        value_parser = PossibleValuesParser::new(["6", "8"]).map(|s| s.parse::<usize>().unwrap())
+    )]
+    ray_columns: Option<usize>,
     /// Ray-triangle back end.
     #[arg(long, value_enum, default_value_t = Backend::LaWatertight)]
     backend: Backend,
@@ -114,11 +131,11 @@ fn main() -> ExitCode {
 }
 
 fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()> {
-    if !has_npy_extension(&cli.hits) {
+    let Some(layout) = HitsLayout::from_path(&cli.hits) else {
         let hits = cli.hits.display();
-        let e = format!("{hits}: the hits are written as NumPy arrays: use a .npy extension");
+        let e = format!("{hits}: the hits are float64 arrays: use a .npy, .npz or .f64 extension");
         return Err(UsageError(e).into());
-    }
+    };
     let columns = columns(cli)?;
     let stats_path = cli.stats.as_deref();
     let inputs =
@@ -134,42 +151,39 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     let pool = raytrace::thread_pool(threads)?;
 
     let progress = Progress::new(cli.quiet);
-    progress.phase(format!("reading {}", cli.rays.display()));
-    let bytes = scene::input::read_file(&cli.rays)?;
-    let rays =
-        npy::read_f64_matrix_of(&bytes, &[6, 8]).with_context(|| cli.rays.display().to_string())?;
-    drop(bytes);
+    progress.phase(format!("opening {}", cli.rays.display()));
+    let mut rays = RaysFile::open(&cli.rays, cli.ray_columns).map_err(|e| rays_error(cli, e))?;
 
     progress.phase(format!("loading {}", cli.input.display()));
     let t = Instant::now();
     let mesh = raytrace::load_mesh(&cli.input, cli.precision)?;
     let load = t.elapsed();
 
-    let samples = if cli.see.wanted() {
-        view::sample_indices(rays.rows, cli.see.view_rays)
-    } else {
-        Vec::new()
-    };
+    let n = rays.rows();
+    let samples =
+        if cli.see.wanted() { view::sample_indices(n, cli.see.view_rays) } else { Vec::new() };
     let job = CastJob {
+        cli,
         mesh: &mesh,
-        rays: &rays.values,
-        stride: rays.columns,
+        rays: &mut rays,
+        hits: hits_file,
+        layout,
         columns,
         progress: &progress,
         samples: &samples,
     };
-    let (name, hits, build, trace, sample_t) =
-        pool.install(|| dispatch(cli.backend, cli.precision, job));
+    let cast = pool.install(|| dispatch(cli.backend, cli.precision, job))?;
 
-    progress.phase(format!("writing {}", cli.hits.display()));
-    let t = Instant::now();
-    let shape = [rays.rows, columns.count()];
-    let hits = hits_file.write(|w| npy::write(w, &shape, hits.iter().copied()))?;
-    let write = t.elapsed();
-    let time = Timings { load, build, trace, write, wall: start.elapsed() };
-    let n = rays.rows as u64;
-    let mut stats = Stats::new(mesh.len(), n, time, name, cli.precision, threads);
-    let mut written = vec![hits];
+    let time = Timings {
+        load,
+        build: cast.build,
+        trace: cast.trace,
+        write: cast.write,
+        wall: start.elapsed(),
+    };
+    let shape = [n, columns.count()];
+    let mut stats = Stats::new(mesh.len(), n as u64, time, cast.name, cli.precision, threads);
+    let mut written = vec![cast.hits];
     if let Some(file) = stats_file {
         let output = OutputRecord {
             path: cli.hits.display().to_string(),
@@ -183,10 +197,9 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     if cli.see.wanted() {
         progress.phase("writing the viewer and scene");
         // Unit directions and distances along them (raycast's t is in units of the direction).
-        let traced = samples.iter().zip(&sample_t).filter_map(|(&k, &t)| {
-            let r = &rays.values[rays.columns * k..rays.columns * k + 6];
+        let traced = cast.samples.iter().filter_map(|(r, t)| {
             let len = (r[3] * r[3] + r[4] * r[4] + r[5] * r[5]).sqrt();
-            let finite = r.iter().all(|x| x.is_finite()) && len > 0.0 && len.is_finite();
+            let finite = r[..6].iter().all(|x| x.is_finite()) && len > 0.0 && len.is_finite();
             let dir = [r[3] / len, r[4] / len, r[5] / len];
             finite.then_some(([r[0], r[1], r[2]], dir, t.map(|t| t * len)))
         });
@@ -206,50 +219,92 @@ fn run(cli: &Cli, (start, started): (Instant, SystemTime)) -> anyhow::Result<()>
     Ok(())
 }
 
-fn has_npy_extension(path: &Path) -> bool {
-    path.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("npy"))
+/// A RAYS error as one line naming the file (an input error names it already).
+fn rays_error(cli: &Cli, e: RaysError) -> anyhow::Error {
+    match e {
+        RaysError::Input(e) => e.into(),
+        e => anyhow::Error::new(e).context(cli.rays.display().to_string()),
+    }
 }
 
-/// Builds the acceleration structure and traces the rays with one back end.
+/// Builds the acceleration structure and traces the rays with one back end, a chunk at a
+/// time, writing the hits as it goes.
 struct CastJob<'a> {
+    cli: &'a Cli,
     mesh: &'a Mesh,
-    /// `stride` values per ray: origin, direction, and t_min, t_max when `stride` is 8.
-    rays: &'a [f64],
-    stride: usize,
+    rays: &'a mut RaysFile,
+    hits: AtomicFile,
+    layout: HitsLayout,
     columns: Columns,
     progress: &'a Progress,
-    /// Rays to show with `--view` and `--scene`, traced again for their nearest hit (with
-    /// `--any-hit` the hits hold no distance).
+    /// Rays to show with `--view` and `--scene` (ascending), traced again for their nearest
+    /// hit (with `--any-hit` the hits hold no distance).
     samples: &'a [usize],
 }
 
+/// What a [`CastJob`] did.
+struct Cast {
+    name: &'static str,
+    hits: Written,
+    build: Duration,
+    trace: Duration,
+    write: Duration,
+    /// The sampled rays' values and nearest hit distances.
+    samples: Vec<(Vec<f64>, Option<f64>)>,
+}
+
 impl Job for CastJob<'_> {
-    /// The back end's name, the HITS values in row order, build time, trace time, the
-    /// samples' hit distances.
-    type Output = (&'static str, Vec<f64>, Duration, Duration, Vec<Option<f64>>);
+    type Output = anyhow::Result<Cast>;
 
     fn run<I: Intersector + 'static>(self, intersector: I) -> Self::Output {
         self.progress.phase("building the BVH");
         let start = Instant::now();
         let accel = Accel::build(intersector, &self.mesh.triangles());
         let build = start.elapsed();
-        let (stride, columns) = (self.stride, self.columns);
-        let n = self.rays.len() / stride;
+        let (n, stride, width) = (self.rays.rows(), self.rays.columns(), self.columns.count());
+        let mut reader = self.rays.rows_reader().map_err(|e| rays_error(self.cli, e))?;
         self.progress.trace(n as u64);
-        let start = Instant::now();
-        let mut hits = vec![0.0; n * columns.count()];
         let inc = |rays: usize| self.progress.inc(rays as u64);
-        cast::trace_rays(&accel, self.mesh, self.rays, stride, columns, &mut hits, &inc);
-        let trace = start.elapsed();
-        let t = self
-            .samples
-            .iter()
-            .map(|&k| {
-                cast::kernel_ray::<I::Real>(&self.rays[stride * k..stride * (k + 1)], stride)
+        let (mut trace, mut write) = (Duration::ZERO, Duration::ZERO);
+        let mut sampled = Vec::new();
+        let hits = self.hits.write_streamed(|w, fail| -> anyhow::Result<()> {
+            let mut sink = HitsWriter::new(w, self.layout, n, width).map_err(fail)?;
+            let (mut rays, mut hits) = (Vec::new(), Vec::new());
+            let mut samples = self.samples.iter().copied().peekable();
+            let mut first = 0;
+            loop {
+                let got = reader
+                    .next_rows(RAYS_PER_CHUNK, &mut rays)
+                    .map_err(|e| rays_error(self.cli, RaysError::Read(e)))?;
+                if got == 0 {
+                    break;
+                }
+                while let Some(k) = samples.next_if(|&k| k < first + got) {
+                    sampled.push(rays[stride * (k - first)..stride * (k - first + 1)].to_vec());
+                }
+                hits.resize(got * width, 0.0);
+                let t = Instant::now();
+                cast::trace_rays(&accel, self.mesh, &rays, stride, self.columns, &mut hits, &inc);
+                trace += t.elapsed();
+                let t = Instant::now();
+                sink.write_rows(&hits).map_err(fail)?;
+                write += t.elapsed();
+                first += got;
+            }
+            let t = Instant::now();
+            sink.finish().map_err(fail)?;
+            write += t.elapsed();
+            Ok(())
+        })?;
+        let samples = sampled
+            .into_iter()
+            .map(|r| {
+                let t = cast::kernel_ray::<I::Real>(&r, stride)
                     .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max))
-                    .map(|hit| hit.t.to_f64())
+                    .map(|hit| hit.t.to_f64());
+                (r, t)
             })
             .collect();
-        (I::NAME, hits, build, trace, t)
+        Ok(Cast { name: I::NAME, hits, build, trace, write, samples })
     }
 }

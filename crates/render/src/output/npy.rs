@@ -16,7 +16,7 @@
 //! assert_eq!(array.values[4], 5.0);
 //! ```
 
-use std::io::{self, Write};
+use std::io::{self, Read, Write};
 
 const MAGIC: &[u8; 6] = b"\x93NUMPY";
 
@@ -55,23 +55,7 @@ pub fn write<T: Element, W: Write>(
     shape: &[usize],
     values: impl IntoIterator<Item = T>,
 ) -> io::Result<()> {
-    let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
-    // A one-element tuple needs its trailing comma in Python.
-    let shape_text =
-        if dims.len() == 1 { format!("({},)", dims[0]) } else { format!("({})", dims.join(", ")) };
-    let mut header =
-        format!("{{'descr': '{}', 'fortran_order': False, 'shape': {shape_text}, }}", T::DESCR);
-    // Pad so that the data starts at a multiple of 64 bytes (magic + version + u16 length = 10).
-    let unpadded = 10 + header.len() + 1;
-    header.extend(std::iter::repeat_n(' ', unpadded.next_multiple_of(64) - unpadded));
-    header.push('\n');
-    let len = u16::try_from(header.len())
-        .map_err(|_| io::Error::new(io::ErrorKind::InvalidInput, "npy header too long"))?;
-    w.write_all(MAGIC)?;
-    w.write_all(&[1, 0])?;
-    w.write_all(&len.to_le_bytes())?;
-    w.write_all(header.as_bytes())?;
-
+    write_header::<T, W>(w, shape)?;
     let expected: usize = shape.iter().product();
     let mut count = 0usize;
     let mut buf = Vec::with_capacity(1 << 16);
@@ -91,6 +75,32 @@ pub fn write<T: Element, W: Write>(
         ));
     }
     Ok(())
+}
+
+/// Writes the header of an array of `T` with the given `shape`: the values, little-endian in
+/// C order, follow it (for arrays written a piece at a time).
+///
+/// # Errors
+///
+/// The writer's I/O errors; [`io::ErrorKind::InvalidInput`] for a shape too long for a
+/// version 1.0 header.
+pub fn write_header<T: Element, W: Write>(w: &mut W, shape: &[usize]) -> io::Result<()> {
+    let dims: Vec<String> = shape.iter().map(usize::to_string).collect();
+    // A one-element tuple needs its trailing comma in Python.
+    let shape_text =
+        if dims.len() == 1 { format!("({},)", dims[0]) } else { format!("({})", dims.join(", ")) };
+    let mut header =
+        format!("{{'descr': '{}', 'fortran_order': False, 'shape': {shape_text}, }}", T::DESCR);
+    // Pad so that the data starts at a multiple of 64 bytes (magic + version + u16 length = 10).
+    let unpadded = 10 + header.len() + 1;
+    header.extend(std::iter::repeat_n(' ', unpadded.next_multiple_of(64) - unpadded));
+    header.push('\n');
+    let len = u16::try_from(header.len())
+        .map_err(|_| io::Error::new(io::ErrorKind::InvalidInput, "npy header too long"))?;
+    w.write_all(MAGIC)?;
+    w.write_all(&[1, 0])?;
+    w.write_all(&len.to_le_bytes())?;
+    w.write_all(header.as_bytes())
 }
 
 /// Why an `.npy` array could not be read.
@@ -163,28 +173,80 @@ pub fn read_f64_matrix(bytes: &[u8], columns: usize) -> Result<Matrix, NpyError>
 ///
 /// As [`read_f64_matrix`]; a shape error names every accepted shape.
 pub fn read_f64_matrix_of(bytes: &[u8], columns: &[usize]) -> Result<Matrix, NpyError> {
-    if bytes.len() < 8 || &bytes[..6] != MAGIC {
+    let mut data = bytes;
+    let (info, _) = read_header(&mut data, columns)?;
+    let expected =
+        info.data_bytes().ok_or(NpyError::Length { expected: usize::MAX, found: data.len() })?;
+    if data.len() != expected {
+        return Err(NpyError::Length { expected, found: data.len() });
+    }
+    let mut values = Vec::new();
+    decode(data, info.was_f32, &mut values);
+    Ok(Matrix { rows: info.rows, columns: info.columns, values, was_f32: info.was_f32 })
+}
+
+/// What the header of an `(N, columns)` float32 or float64 array says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Info {
+    /// Number of rows.
+    pub rows: usize,
+    /// Number of columns.
+    pub columns: usize,
+    /// Whether the values are `f32` (`'<f4'`) rather than `f64`.
+    pub was_f32: bool,
+}
+
+impl Info {
+    /// The bytes of the values that follow the header (`None` if beyond `usize`).
+    #[must_use]
+    pub fn data_bytes(&self) -> Option<usize> {
+        let size = if self.was_f32 { 4 } else { 8 };
+        self.rows.checked_mul(self.columns)?.checked_mul(size)
+    }
+}
+
+/// The longest header read (NumPy itself refuses more than 10,000 bytes by default).
+const MAX_HEADER: u32 = 1 << 20;
+
+/// Reads the header of an `(N, c)` little-endian float32 or float64 array in C order, for any
+/// `c` of `columns`, from `r`, which is left at the first value; returns it with the number of
+/// bytes read (magic, version, length and header: where the values start).
+///
+/// # Errors
+///
+/// As [`read_f64_matrix`], except the data length, which the caller checks.
+pub fn read_header(r: &mut impl Read, columns: &[usize]) -> Result<(Info, usize), NpyError> {
+    let mut start = [0u8; 8];
+    if read_up_to(r, &mut start) < 8 || &start[..6] != MAGIC {
         return Err(NpyError::NotNpy);
     }
-    let (major, minor) = (bytes[6], bytes[7]);
-    let (header_len, start) = match major {
-        1 if bytes.len() >= 10 => (usize::from(u16::from_le_bytes([bytes[8], bytes[9]])), 10usize),
-        2 | 3 if bytes.len() >= 12 => {
-            let n = u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]);
-            (usize::try_from(n).map_err(|_| NpyError::TruncatedHeader)?, 12)
+    let (major, minor) = (start[6], start[7]);
+    let mut len = [0u8; 4];
+    let (header_len, prefix) = match major {
+        1 if read_up_to(r, &mut len[..2]) == 2 => {
+            (u32::from(u16::from_le_bytes([len[0], len[1]])), 10)
         }
+        2 | 3 if read_up_to(r, &mut len) == 4 => (u32::from_le_bytes(len), 12),
         1..=3 => return Err(NpyError::TruncatedHeader),
         _ => return Err(NpyError::Version(major, minor)),
     };
-    let end = start.checked_add(header_len).ok_or(NpyError::TruncatedHeader)?;
-    let header = bytes.get(start..end).ok_or(NpyError::TruncatedHeader)?;
-    let header = std::str::from_utf8(header)
+    if header_len > MAX_HEADER {
+        return Err(NpyError::Header(format!("the header is {header_len} bytes, more than 1 MiB")));
+    }
+    let mut header = Vec::new();
+    r.take(u64::from(header_len))
+        .read_to_end(&mut header)
+        .map_err(|_| NpyError::TruncatedHeader)?;
+    if header.len() != header_len as usize {
+        return Err(NpyError::TruncatedHeader);
+    }
+    let header = std::str::from_utf8(&header)
         .map_err(|_| NpyError::Header("the header is not text".into()))?;
     let fields = Header::parse(header)?;
 
-    let size = match fields.descr.as_str() {
-        "<f4" => 4,
-        "<f8" => 8,
+    let was_f32 = match fields.descr.as_str() {
+        "<f4" => true,
+        "<f8" => false,
         other => return Err(NpyError::Dtype(shown(other))),
     };
     if fields.fortran_order {
@@ -198,22 +260,39 @@ pub fn read_f64_matrix_of(bytes: &[u8], columns: &[usize]) -> Result<Matrix, Npy
     if !columns.contains(&cols) {
         return Err(shape_error());
     }
-    let data = &bytes[end..];
-    let expected = rows
-        .checked_mul(cols)
-        .and_then(|n| n.checked_mul(size))
-        .ok_or(NpyError::Length { expected: usize::MAX, found: data.len() })?;
-    if data.len() != expected {
-        return Err(NpyError::Length { expected, found: data.len() });
+    Ok((Info { rows, columns: cols, was_f32 }, prefix + header_len as usize))
+}
+
+/// Reads into `buf` until it is full or the reader ends (or fails); returns the bytes read.
+fn read_up_to(r: &mut impl Read, buf: &mut [u8]) -> usize {
+    let mut n = 0;
+    while n < buf.len() {
+        match r.read(&mut buf[n..]) {
+            Ok(0) => break,
+            Ok(k) => n += k,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(_) => break,
+        }
     }
-    let values = if size == 4 {
-        data.chunks_exact(4)
-            .map(|c| f64::from(f32::from_le_bytes(c.try_into().expect("4 bytes"))))
-            .collect()
+    n
+}
+
+/// Appends the little-endian `f32` (`was_f32`) or `f64` values of `data` to `out`, widened to
+/// `f64` (exactly).
+///
+/// # Panics
+///
+/// If `data` is not a whole number of values.
+pub fn decode(data: &[u8], was_f32: bool, out: &mut Vec<f64>) {
+    if was_f32 {
+        assert!(data.len().is_multiple_of(4), "not whole f32 values");
+        out.extend(
+            data.chunks_exact(4).map(|c| f64::from(f32::from_le_bytes(c.try_into().expect("4")))),
+        );
     } else {
-        data.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes"))).collect()
-    };
-    Ok(Matrix { rows, columns: cols, values, was_f32: size == 4 })
+        assert!(data.len().is_multiple_of(8), "not whole f64 values");
+        out.extend(data.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().expect("8"))));
+    }
 }
 
 /// The three keys of a `.npy` header.
