@@ -74,6 +74,10 @@ pub type Segment<T> = (Ray<T>, T, T);
 ///
 /// If `r` has fewer than 6 values, or fewer than 8 with `stride` 8.
 #[must_use]
+// Always inlined: called out of line, its answer went through memory in pieces and was read
+// back whole, a store-forwarding stall that cost `raycast` more per ray than a missed ray's
+// whole traversal (`results/README.md`, "raycast's per-ray cost").
+#[inline(always)]
 pub fn kernel_ray<T: Real>(r: &[f64], stride: usize) -> Option<Segment<T>> {
     let ray: Ray<T> = Ray::new([r[0], r[1], r[2]], [r[3], r[4], r[5]]).cast();
     let (t_min, t_max) =
