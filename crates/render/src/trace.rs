@@ -28,6 +28,10 @@
 //! rays test it once each. The answers are those of [`Accel::closest_hit`] and
 //! [`Accel::any_hit`] per pixel, bit for bit, ties included; only the speed differs.
 //!
+//! A block whose pixels all lie outside the projection of the BVH's root box, by a margin
+//! that covers every rounding (`Footprint`), is a miss without a ray being made: most of a
+//! frame where the mesh is small.
+//!
 //! # Parallelism and progress
 //!
 //! The image is cut into bands of at most [`TILE`] rows, each traced as a row of
@@ -40,6 +44,7 @@
 use intersect::vec3::{cross, dot, sub};
 use intersect::{Hit, Intersector, Ray, Real};
 use rayon::prelude::*;
+use std::ops::Range;
 
 use crate::camera::{Camera, PixelRays};
 use crate::frame::{Frame, FrameData};
@@ -79,6 +84,19 @@ pub fn render_frame<I: Intersector>(
     frame: &mut Frame,
     progress: &(impl Fn(usize) + Sync),
 ) {
+    let footprint = Footprint::new(accel, camera, frame.width(), frame.height());
+    render_within(accel, mesh, camera, frame, progress, &footprint);
+}
+
+/// [`render_frame`] with every block outside `footprint` a miss.
+fn render_within<I: Intersector>(
+    accel: &Accel<I>,
+    mesh: &Mesh,
+    camera: &Camera,
+    frame: &mut Frame,
+    progress: &(impl Fn(usize) + Sync),
+    footprint: &Footprint,
+) {
     assert_eq!(accel.len(), mesh.len(), "the accelerator was not built from this mesh");
     let (w, h) = (frame.width(), frame.height());
     let inf = <I::Real as Real>::INFINITY;
@@ -94,28 +112,37 @@ pub fn render_frame<I: Intersector>(
         FrameData::Alpha(px) => {
             let any =
                 |rays: &[Ray<I::Real>], out: &mut [bool]| accel.any_hits_packet(rays, inf, out);
-            fill_traced(px, w, h, progress, &rays, any, |_, _, hit| u8::from(hit));
+            fill_traced(px, w, h, progress, (&rays, footprint), any, |_, _, hit| u8::from(hit));
         }
-        FrameData::Depth(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
-            hit.map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
-        }),
-        FrameData::Normal(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
-            hit.map_or([0.0; 3], |hit| {
-                geometric_normal(mesh, hit.prim as usize).map_or([0.0; 3], |n| n.map(|c| c as f32))
+        FrameData::Depth(px) => {
+            fill_traced(px, w, h, progress, (&rays, footprint), closest, |_, _, hit| {
+                hit.map_or(f32::INFINITY, |hit| hit.t.to_f64() as f32)
             })
-        }),
-        FrameData::Shade(px) => fill_traced(px, w, h, progress, &rays, closest, |i, j, hit| {
-            hit.map_or([0.0; 3], |hit| {
-                let dir = rays.direction(i, j);
-                let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
-                let n = shading_normal(mesh, hit.prim as usize, u, v, dir);
-                let lambert = dot(n, light).max(0.0) as f32;
-                [AMBIENT + (1.0 - AMBIENT) * lambert; 3]
+        }
+        FrameData::Normal(px) => {
+            fill_traced(px, w, h, progress, (&rays, footprint), closest, |_, _, hit| {
+                hit.map_or([0.0; 3], |hit| {
+                    geometric_normal(mesh, hit.prim as usize)
+                        .map_or([0.0; 3], |n| n.map(|c| c as f32))
+                })
             })
-        }),
-        FrameData::Prim(px) => fill_traced(px, w, h, progress, &rays, closest, |_, _, hit| {
-            hit.map_or(u32::MAX, |hit| hit.prim)
-        }),
+        }
+        FrameData::Shade(px) => {
+            fill_traced(px, w, h, progress, (&rays, footprint), closest, |i, j, hit| {
+                hit.map_or([0.0; 3], |hit| {
+                    let dir = rays.direction(i, j);
+                    let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
+                    let n = shading_normal(mesh, hit.prim as usize, u, v, dir);
+                    let lambert = dot(n, light).max(0.0) as f32;
+                    [AMBIENT + (1.0 - AMBIENT) * lambert; 3]
+                })
+            })
+        }
+        FrameData::Prim(px) => {
+            fill_traced(px, w, h, progress, (&rays, footprint), closest, |_, _, hit| {
+                hit.map_or(u32::MAX, |hit| hit.prim)
+            })
+        }
     }
 }
 
@@ -150,7 +177,7 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
     w: u32,
     h: u32,
     progress: &(impl Fn(usize) + Sync),
-    rays: &PixelRays,
+    (rays, footprint): (&PixelRays, &Footprint),
     trace: impl Fn(&[Ray<T>], &mut [Q]) + Sync,
     pixel: impl Fn(u32, u32, Q) -> P + Sync,
 ) {
@@ -158,10 +185,18 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
         let mut at = Vec::with_capacity((TILE * TILE) as usize);
         let mut tile_rays = Vec::with_capacity((TILE * TILE) as usize);
         let mut segment = [Ray::new([T::ZERO; 3], [T::ZERO; 3]); BLOCK as usize];
+        let mut missed = Vec::new();
         for bj in (0..rows_here).step_by(BLOCK as usize) {
             for bi in (i0..i1).step_by(BLOCK as usize) {
                 let columns = bi..(bi + BLOCK).min(i1);
                 let n = columns.len();
+                let block_rows = j0 + bj..j0 + (bj + BLOCK).min(rows_here);
+                if !footprint.may_hit(columns.clone(), block_rows) {
+                    for dj in bj..(bj + BLOCK).min(rows_here) {
+                        missed.extend(columns.clone().map(|i| (i, dj)));
+                    }
+                    continue;
+                }
                 for dj in bj..(bj + BLOCK).min(rows_here) {
                     rays.row_into(j0 + dj, columns.clone(), &mut segment[..n]);
                     tile_rays.extend_from_slice(&segment[..n]);
@@ -174,7 +209,89 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
         for (&(i, dj), &answer) in at.iter().zip(&answers) {
             rows[(dj * w + i) as usize] = pixel(i, j0 + dj, answer);
         }
+        for &(i, dj) in &missed {
+            rows[(dj * w + i) as usize] = pixel(i, j0 + dj, Q::default());
+        }
     });
+}
+
+/// Where in an image the rays may hit the mesh: the projection of the BVH's root box, as a
+/// rectangle of pixel coordinates grown by a margin, or the whole image.
+///
+/// A ray whose pixel centre lies outside the rectangle passes the box at some distance, so the
+/// traversal's first box test rejects it: its answer is a miss, found without the ray. The
+/// margin, in image-plane units (at unit depth), is 4 pixels plus `1e-5 (1 + scale / z)`,
+/// `scale` the largest coordinate of the eye and the box and `z` the box's nearest depth.
+/// Rounding the eye to `f32` moves it by at most `1e-7 scale`, which moves an image-plane
+/// point by at most `(1 + |x|) 1e-7 scale / z`, under `5e-7 scale / z` with `|x|, |y| < 4`;
+/// rounding the direction and the box test's own rounding (relative `6e-8` each) stay under
+/// `1e-6`: the margin is 20 times what it must cover. Views where the bound does not hold
+/// keep the whole image: a corner of the box not in front of the eye, an image wider or
+/// taller than `tan = 4` (about 152 degrees), values not finite.
+#[derive(Clone, Copy, Debug)]
+struct Footprint {
+    /// Pixel coordinates (`i + 0.5` is pixel `i`'s centre) of the rectangle: `x0, x1, y0, y1`.
+    rect: [f64; 4],
+}
+
+impl Footprint {
+    /// The whole image.
+    const WHOLE: Self =
+        Self { rect: [f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY] };
+
+    fn new<I: Intersector>(accel: &Accel<I>, camera: &Camera, w: u32, h: u32) -> Self {
+        let whole = Self::WHOLE;
+        if accel.is_empty() || w == 0 || h == 0 {
+            return whole;
+        }
+        let b = accel.bvh().node_bounds(0);
+        let (lo, hi) = (b.min.map(Real::to_f64), b.max.map(Real::to_f64));
+        let (eye, fwd, right, up) = (camera.eye(), camera.forward(), camera.right(), camera.up());
+        let (fw, fh) = (f64::from(w), f64::from(h));
+        let tan_y = (camera.fov_deg().to_radians() / 2.0).tan();
+        let tan_x = tan_y * fw / fh;
+        if !(tan_x < 4.0 && tan_y < 4.0) {
+            return whole;
+        }
+        let mut scale = eye.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let (mut x0, mut x1, mut y0, mut y1) =
+            (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+        let mut z_min = f64::INFINITY;
+        for corner in 0..8 {
+            let p: [f64; 3] =
+                core::array::from_fn(|k| if corner >> k & 1 == 0 { lo[k] } else { hi[k] });
+            scale = p.iter().fold(scale, |m, x| m.max(x.abs()));
+            let d = sub(p, eye);
+            let z = dot(d, fwd);
+            // Image-plane coordinates: `x` right and `y` up at unit distance.
+            let (x, y) = (dot(d, right) / z, dot(d, up) / z);
+            if z <= 0.0 || ![x, y, z].iter().all(|v| v.is_finite()) {
+                return whole;
+            }
+            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+            z_min = z_min.min(z);
+        }
+        if !scale.is_finite() {
+            return whole;
+        }
+        let pixel = 2.0 * tan_y / fh;
+        let margin = 4.0 * pixel + 1e-5 * (1.0 + scale / z_min);
+        let (x0, x1, y0, y1) = (x0 - margin, x1 + margin, y0 - margin, y1 + margin);
+        // Inverting `Camera::direction`'s `x = (2 (i + 0.5) / w - 1) tan_x` and
+        // `y = (1 - 2 (j + 0.5) / h) tan_y`; `y` grows downwards in pixels.
+        let px = |x: f64| (x / tan_x + 1.0) * fw / 2.0;
+        let py = |y: f64| (1.0 - y / tan_y) * fh / 2.0;
+        Self { rect: [px(x0), px(x1), py(y1), py(y0)] }
+    }
+
+    /// Whether a ray through some pixel of `columns x rows` may hit.
+    fn may_hit(&self, columns: Range<u32>, rows: Range<u32>) -> bool {
+        let [x0, x1, y0, y1] = self.rect;
+        let centre = |k: u32| f64::from(k) + 0.5;
+        let (i0, i1) = (centre(columns.start), centre(columns.end - 1));
+        let (j0, j1) = (centre(rows.start), centre(rows.end - 1));
+        i1 >= x0 && i0 <= x1 && j1 >= y0 && j0 <= y1
+    }
 }
 
 /// Cuts a `w x h` row-major buffer into bands of tiles shared among the threads; `tile` fills
@@ -411,6 +528,76 @@ mod tests {
             let b = three.install(|| run(&mesh, mode, 29, 41));
             assert_eq!(a, b, "{mode}");
         }
+    }
+
+    /// `n x n` squares of two triangles each tiling `[-s, s]^2` around `(cx, cy)` at depth
+    /// `z`, every vertex nudged off the grid so that edges are not all aligned.
+    fn grid(n: usize, s: f64, [cx, cy, z]: [f64; 3]) -> Mesh {
+        let mut obj = String::new();
+        for j in 0..=n {
+            for i in 0..=n {
+                let nudge = ((i * 7 + j * 13) % 5) as f64 * 0.03 / n as f64;
+                let x = cx + s * (2.0 * i as f64 / n as f64 - 1.0 + nudge);
+                let y = cy + s * (2.0 * j as f64 / n as f64 - 1.0 - nudge);
+                obj.push_str(&format!("v {x} {y} {}\n", z + s * nudge));
+            }
+        }
+        for j in 0..n {
+            for i in 0..n {
+                let v = |i: usize, j: usize| j * (n + 1) + i + 1;
+                let (a, b, c, d) = (v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1));
+                obj.push_str(&format!("f {a} {d} {c}\nf {a} {c} {b}\n"));
+            }
+        }
+        Mesh::from_obj_str(&obj, "grid.obj").unwrap()
+    }
+
+    #[test]
+    fn blocks_outside_the_footprint_are_the_misses_they_would_be() {
+        let camera = Camera::origin();
+        // Small in the frame, off centre, and reaching past the frame's edge; each drawn with
+        // and without the footprint.
+        let views = [
+            (grid(6, 0.3, [0.4, -0.2, 4.0]), camera, 64, 48),
+            (grid(6, 0.5, [1.7, 0.9, 4.0]), camera, 40, 40),
+            // Far from the origin: the rounding of the eye to f32 matters most here.
+            (
+                grid(4, 1.0, [1e5, 2e5, 3e5 + 40.0]),
+                Camera::look_at([1e5, 2e5, 3e5], [1e5, 2e5, 3e5 + 1.0], [0.0, 1.0, 0.0], 30.0)
+                    .unwrap(),
+                64,
+                64,
+            ),
+        ];
+        for (mesh, camera, w, h) in views {
+            let accel = Accel::build(Reference, &mesh.triangles());
+            let footprint = Footprint::new(&accel, &camera, w, h);
+            assert!(footprint.rect[0].is_finite(), "the footprint is in use");
+            let outside = (0..w)
+                .step_by(8)
+                .flat_map(|i| (0..h).step_by(8).map(move |j| (i, j)))
+                .filter(|&(i, j)| !footprint.may_hit(i..(i + 8).min(w), j..(j + 8).min(h)))
+                .count();
+            assert!(outside > 0, "some block is culled: {:?}", footprint.rect);
+            for mode in Mode::ALL {
+                let draw = |footprint: &Footprint| {
+                    let mut frame = Frame::new(mode, w, h).unwrap();
+                    render_within(&accel, &mesh, &camera, &mut frame, &|_| {}, footprint);
+                    frame
+                };
+                let (culled, whole) = (draw(&footprint), draw(&Footprint::WHOLE));
+                if let FrameData::Alpha(px) = whole.data() {
+                    let hits = px.iter().filter(|&&a| a != 0).count();
+                    assert!(hits > 8 && hits < px.len() / 2, "{hits} hits: a view to test");
+                }
+                assert_eq!(culled, whole, "{mode}");
+            }
+        }
+        // The eye inside the box, or the box behind it: the whole image.
+        let mesh = grid(2, 1.0, [0.0, 0.0, 0.0]);
+        let accel = Accel::build(Reference, &mesh.triangles());
+        let inside = Footprint::new(&accel, &Camera::origin(), 16, 16);
+        assert!(inside.rect[0].is_infinite());
     }
 
     #[test]
