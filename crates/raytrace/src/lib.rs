@@ -392,6 +392,7 @@ mod tests {
                 "build_ms",
                 "load_ms",
                 "mrays_per_s",
+                "peak_memory_bytes",
                 "precision",
                 "rays",
                 "threads",
