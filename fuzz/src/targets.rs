@@ -256,10 +256,15 @@ fn npy_rays(bytes: &[u8]) -> Outcome {
 }
 
 /// `.npz` rays as `raycast` reads them: written to a file (the reader seeks), opened, and
-/// read in chunks of 1000 rays (the files' names differ by process only: one run at a time).
+/// read in chunks of 1000 rays (each input in a file of its own: the tests run targets on
+/// several threads at once).
 fn npz_rays(bytes: &[u8]) -> Outcome {
     use render::cast::files::RaysFile;
-    let path = std::env::temp_dir().join(format!("wedge-fuzz-{}.npz", std::process::id()));
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static INPUTS: AtomicU64 = AtomicU64::new(0);
+    let n = INPUTS.fetch_add(1, Ordering::Relaxed);
+    let name = format!("wedge-fuzz-{}-{n}.npz", std::process::id());
+    let path = std::env::temp_dir().join(name);
     std::fs::write(&path, bytes).expect("writing the input to a temporary file");
     let opened = RaysFile::open(&path, None);
     // Open files outlive their name (Linux): leave nothing in the temporary directory.
