@@ -33,6 +33,13 @@ fn expected(k: usize) -> Option<Option<f64>> {
     Some((margin < 0.0).then_some(if y > x { 0.0 } else { 1.0 }))
 }
 
+/// Writes [`SQUARE`] into `dir`.
+fn square(dir: &Path) -> PathBuf {
+    let obj = dir.join("square.obj");
+    std::fs::write(&obj, SQUARE).unwrap();
+    obj
+}
+
 fn raycast(args: &[&dyn AsRef<std::ffi::OsStr>]) {
     let out = Command::new(env!("CARGO_BIN_EXE_raycast")).args(args).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
@@ -83,8 +90,7 @@ fn read_hits(path: &Path) -> Vec<f64> {
 fn every_layout_gives_the_same_hits_across_chunks() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let obj = d.join("square.obj");
-    std::fs::write(&obj, SQUARE).unwrap();
+    let obj = square(d);
     // Two whole chunks and a part of a third.
     let n = 2 * RAYS_PER_CHUNK + 4321;
     let npy_rays = d.join("rays.npy");
@@ -140,8 +146,7 @@ fn peak_memory(args: &[&dyn AsRef<std::ffi::OsStr>], stats: &Path) -> u64 {
 fn memory_is_bounded_by_the_chunk_not_the_array() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let obj = d.join("square.obj");
-    std::fs::write(&obj, SQUARE).unwrap();
+    let obj = square(d);
     // 3M rays: 72 MB of float32 rays, 144 MB as f64, 96 MB of hits. Reading them whole took
     // all three at once; a chunk is 16 MiB of rays and 8 MiB of hits.
     let n = 3_000_000;

@@ -185,7 +185,6 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
         let mut at = Vec::with_capacity((TILE * TILE) as usize);
         let mut tile_rays = Vec::with_capacity((TILE * TILE) as usize);
         let mut segment = [Ray::new([T::ZERO; 3], [T::ZERO; 3]); BLOCK as usize];
-        let mut missed = Vec::new();
         for bj in (0..rows_here).step_by(BLOCK as usize) {
             for bi in (i0..i1).step_by(BLOCK as usize) {
                 let columns = bi..(bi + BLOCK).min(i1);
@@ -193,7 +192,9 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
                 let block_rows = j0 + bj..j0 + (bj + BLOCK).min(rows_here);
                 if !footprint.may_hit(columns.clone(), block_rows) {
                     for dj in bj..(bj + BLOCK).min(rows_here) {
-                        missed.extend(columns.clone().map(|i| (i, dj)));
+                        for i in columns.clone() {
+                            rows[(dj * w + i) as usize] = pixel(i, j0 + dj, Q::default());
+                        }
                     }
                     continue;
                 }
@@ -208,9 +209,6 @@ fn fill_traced<P: Send, T: Real, Q: Copy + Default>(
         trace(&tile_rays, &mut answers);
         for (&(i, dj), &answer) in at.iter().zip(&answers) {
             rows[(dj * w + i) as usize] = pixel(i, j0 + dj, answer);
-        }
-        for &(i, dj) in &missed {
-            rows[(dj * w + i) as usize] = pixel(i, j0 + dj, Q::default());
         }
     });
 }
