@@ -44,12 +44,14 @@
 //! assert!(scene.any_hit(&ray, 10.0) && !scene.any_hit(&ray, 1.0));
 //! ```
 
+use core::ops::Range;
 use std::time::{Duration, Instant};
 
 use intersect::{Hit, Intersector, Ray, Triangle};
 use rayon::prelude::*;
 
 use crate::Bvh;
+use crate::traverse::{AnyLeaf, ClosestLeaf};
 
 /// Rays per batch of the packet queries (a multiple of [`crate::PACKET`]: a 16 x 16 tile).
 const BATCH: usize = 256;
@@ -228,13 +230,9 @@ impl<I: Intersector> Accel<I> {
     ) -> Option<Hit<I::Real>> {
         // Prepared when the ray first reaches a leaf (the same bits as up front): rays that
         // miss the mesh's boxes never pay for it.
-        let mut ray_data = None;
-        let mut best: Option<Hit<I::Real>> = None;
-        self.bvh.closest(ray, t_max, |slots, limit| {
-            let data = ray_data.get_or_insert_with(|| self.intersector.prepare_ray(ray));
-            self.closest_in_leaf(slots, ray, data, limit, &accept, &mut best);
-        });
-        best
+        let mut search = Closest { accel: self, ray, data: None, accept, best: None };
+        self.bvh.closest_visit(ray, t_max, &mut search);
+        search.best
     }
 
     /// The kernel on the triangles of `slots`: keeps in `best` the nearest hit under
@@ -242,7 +240,7 @@ impl<I: Intersector> Accel<I> {
     #[inline(always)]
     fn closest_in_leaf(
         &self,
-        slots: core::ops::Range<usize>,
+        slots: Range<usize>,
         ray: &Ray<I::Real>,
         ray_data: &I::RayData,
         limit: &mut I::Real,
@@ -323,11 +321,7 @@ impl<I: Intersector> Accel<I> {
     #[inline]
     pub fn any_hit(&self, ray: &Ray<I::Real>, t_max: I::Real) -> bool {
         // Prepared lazily, as in `closest_where`.
-        let mut ray_data = None;
-        self.bvh.any(ray, t_max, |slots| {
-            let data = ray_data.get_or_insert_with(|| self.intersector.prepare_ray(ray));
-            self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, data, t_max))
-        })
+        self.bvh.any_visit(ray, t_max, Any { accel: self, ray, data: None, t_max })
     }
 
     /// Whether `ray` hits any triangle with `t_min <= t <= t_max` (and `t > 0`); for
@@ -395,5 +389,48 @@ impl<I: Intersector> Accel<I> {
     pub fn any_hit_brute_force(&self, ray: &Ray<I::Real>, t_max: I::Real) -> bool {
         let ray_data = self.intersector.prepare_ray(ray);
         self.prims.iter().any(|p| self.intersector.occludes(p, ray, &ray_data, t_max))
+    }
+}
+
+/// The leaf visit of [`Accel::closest_where`], a type rather than a closure so that it is
+/// compiled into the traversal loop (see `ClosestLeaf`).
+struct Closest<'a, I: Intersector, A> {
+    accel: &'a Accel<I>,
+    ray: &'a Ray<I::Real>,
+    /// The ray prepared for the kernel, once it reaches a leaf.
+    data: Option<I::RayData>,
+    accept: A,
+    best: Option<Hit<I::Real>>,
+}
+
+impl<I: Intersector, A: Fn(I::Real) -> bool> ClosestLeaf<I::Real> for &mut Closest<'_, I, A> {
+    #[inline(always)]
+    fn visit(&mut self, slots: Range<usize>, limit: &mut I::Real) {
+        let Closest { accel, ray, data, accept, best } = &mut **self;
+        let data = data.get_or_insert_with(|| accel.intersector.prepare_ray(ray));
+        accel.closest_in_leaf(slots, ray, data, limit, &*accept, best);
+    }
+}
+
+/// The leaf visit of [`Accel::any_hit`] (see [`Closest`]).
+struct Any<'a, I: Intersector> {
+    accel: &'a Accel<I>,
+    ray: &'a Ray<I::Real>,
+    data: Option<I::RayData>,
+    t_max: I::Real,
+}
+
+impl<I: Intersector> AnyLeaf for Any<'_, I> {
+    #[inline(always)]
+    fn visit(&mut self, slots: Range<usize>) -> bool {
+        let Any { accel, ray, data, t_max } = self;
+        let data = data.get_or_insert_with(|| accel.intersector.prepare_ray(ray));
+        // A plain loop: `Iter::any` stays out of line in the traversal loop.
+        for p in &accel.prims[slots] {
+            if accel.intersector.occludes(p, ray, data, *t_max) {
+                return true;
+            }
+        }
+        false
     }
 }

@@ -139,7 +139,7 @@ pub use simd::{ISA_ENV, Isa};
 
 use build::{Info, PARALLEL_MIN, PrimRef};
 use node::{Node, is_leaf, leaf_slots};
-use traverse::Baseline;
+use traverse::{AnyLeaf, Baseline, ClosestLeaf};
 
 /// Largest number of bins per axis in the SAH build (sets of at least 4096 primitives; 16
 /// bins from 256, 8 below, at most one per primitive).
@@ -355,6 +355,20 @@ impl<T: Real> Bvh<T> {
         unsafe { self.closest_unchecked(Self::isa(), ray, t_max, leaf) }
     }
 
+    /// [`Bvh::closest`] with a leaf visitor of the crate's own, compiled into the loop.
+    #[inline]
+    pub(crate) fn closest_visit<L: ClosestLeaf<T>>(&self, ray: &Ray<T>, t_max: T, leaf: L) {
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.closest_unchecked(Self::isa(), ray, t_max, leaf) }
+    }
+
+    /// [`Bvh::any`] with a leaf visitor of the crate's own, compiled into the loop.
+    #[inline]
+    pub(crate) fn any_visit<L: AnyLeaf>(&self, ray: &Ray<T>, t_max: T, leaf: L) -> bool {
+        // SAFETY: `Isa::current*` is `Avx512` only on a CPU that has it.
+        unsafe { self.any_unchecked(Self::isa(), ray, t_max, leaf) }
+    }
+
     /// The node test of this precision in this process.
     #[inline(always)]
     fn isa() -> Isa {
@@ -380,7 +394,7 @@ impl<T: Real> Bvh<T> {
     #[inline(always)]
     unsafe fn closest_unchecked<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F)
     where
-        F: FnMut(Range<usize>, &mut T),
+        F: ClosestLeaf<T>,
     {
         #[cfg(target_arch = "x86_64")]
         if isa == Isa::Avx512 {
@@ -476,7 +490,7 @@ impl<T: Real> Bvh<T> {
     #[inline(always)]
     unsafe fn any_unchecked<F>(&self, isa: Isa, ray: &Ray<T>, t_max: T, leaf: F) -> bool
     where
-        F: FnMut(Range<usize>) -> bool,
+        F: AnyLeaf,
     {
         #[cfg(target_arch = "x86_64")]
         if isa == Isa::Avx512 {

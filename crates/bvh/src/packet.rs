@@ -292,7 +292,7 @@ where
                 nodes,
                 &rays[i],
                 limits[i],
-                |slots, l| {
+                |slots: Range<usize>, l: &mut T| {
                     leaf(slots, i, l);
                     last = *l;
                 },
@@ -381,10 +381,13 @@ where
             any_group(nodes, &mut g, &mut stack, hit, &mut leaf);
         }
         Work::Single(i) => {
-            hit[i] =
-                traverse::any::<S, T, _>(traverse::Baseline, nodes, &rays[i], limits[i], |slots| {
-                    leaf(slots, i)
-                });
+            hit[i] = traverse::any::<S, T, _>(
+                traverse::Baseline,
+                nodes,
+                &rays[i],
+                limits[i],
+                |slots: Range<usize>| leaf(slots, i),
+            );
         }
     });
 }

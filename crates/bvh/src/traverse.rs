@@ -431,6 +431,39 @@ impl<E: Copy> Stack<E> {
     }
 }
 
+/// What a closest-hit traversal does at a leaf: [`closest`] hands it the leaf's slots and the
+/// current limit, which it lowers when it finds a nearer hit.
+///
+/// Closures implement it. A type of one's own whose `visit` is `#[inline(always)]` is
+/// compiled into the traversal loop: a closure's body is inlined at the compiler's discretion,
+/// and one called from the loop of each instruction set usually is not (a call per leaf, and
+/// the loop's registers saved around it).
+pub trait ClosestLeaf<T> {
+    /// The leaf's slots and the limit to lower.
+    fn visit(&mut self, slots: Range<usize>, limit: &mut T);
+}
+
+impl<T, F: FnMut(Range<usize>, &mut T)> ClosestLeaf<T> for F {
+    #[inline(always)]
+    fn visit(&mut self, slots: Range<usize>, limit: &mut T) {
+        self(slots, limit);
+    }
+}
+
+/// What an any-hit traversal does at a leaf: [`any`] hands it the leaf's slots and stops
+/// when it returns `true` (see [`ClosestLeaf`] on closures and inlining).
+pub trait AnyLeaf {
+    /// Whether the ray hits a triangle of these slots.
+    fn visit(&mut self, slots: Range<usize>) -> bool;
+}
+
+impl<F: FnMut(Range<usize>) -> bool> AnyLeaf for F {
+    #[inline(always)]
+    fn visit(&mut self, slots: Range<usize>) -> bool {
+        self(slots)
+    }
+}
+
 /// Converts the tree's precision to the lane type (exact: they are the same precision).
 #[inline(always)]
 fn lane<S: Lane, T: Real>(x: T) -> S {
@@ -445,7 +478,7 @@ pub fn closest_avx512<S, T, F>(test: Avx512, nodes: &[Node], ray: &Ray<T>, t_max
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>, &mut T),
+    F: ClosestLeaf<T>,
 {
     closest::<S, T, F>(test, nodes, ray, t_max, leaf);
 }
@@ -457,7 +490,7 @@ pub fn any_avx512<S, T, F>(test: Avx512, nodes: &[Node], ray: &Ray<T>, t_max: T,
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>) -> bool,
+    F: AnyLeaf,
 {
     any::<S, T, F>(test, nodes, ray, t_max, leaf)
 }
@@ -468,7 +501,7 @@ pub fn closest<S, T, F>(test: impl NodeTest, nodes: &[Node], ray: &Ray<T>, t_max
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>, &mut T),
+    F: ClosestLeaf<T>,
 {
     if nodes.is_empty() {
         return;
@@ -480,7 +513,7 @@ where
     let mut current = 0u32;
     loop {
         if is_leaf(current) {
-            leaf(leaf_slots(current), &mut limit);
+            leaf.visit(leaf_slots(current), &mut limit);
         } else {
             let node = &nodes[current as usize];
             let mask = test.hits(node, &prepared, lane(limit), &mut t);
@@ -550,7 +583,7 @@ pub fn any<S, T, F>(
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>) -> bool,
+    F: AnyLeaf,
 {
     if nodes.is_empty() {
         return false;
@@ -562,7 +595,7 @@ where
     let mut current = 0u32;
     loop {
         if is_leaf(current) {
-            if leaf(leaf_slots(current)) {
+            if leaf.visit(leaf_slots(current)) {
                 return true;
             }
         } else {

@@ -187,7 +187,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn intersect(
         &self,
         prim: &WatertightPrim<T>,
