@@ -44,6 +44,7 @@ fn g3() -> AlgebraSpec {
             ("geometric", "Multivector", "Multivector"),
             ("geometric", "Rotor", "Rotor"),
         ],
+        lanes: false,
         versors: &["Vector", "Bivector", "Rotor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Rotor"],
     }
@@ -116,6 +117,7 @@ fn pga() -> AlgebraSpec {
             ("geometric", "Motor", "Motor"),
             ("geometric", "Multivector", "Multivector"),
         ],
+        lanes: true,
         versors: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
         sandwiched: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
     }
@@ -183,6 +185,7 @@ fn cga() -> AlgebraSpec {
         // Built from G3's kernels by hand (`cga/geometric.rs`), checked against the generated
         // form.
         hand_written: &[("geometric", "Multivector", "Multivector")],
+        lanes: true,
         versors: &["Vector", "Rotor", "Motor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Quadvector"],
     }

@@ -478,8 +478,9 @@ impl Resolved<'_> {
                 blades.iter().map(|&k| format!("`{}`", self.blades[k].name)).collect();
             write!(
                 code,
-                "/// {}\n///\n/// Blades {}.\n\
-                    #[derive(Clone, Copy, Debug, Default, PartialEq)]\npub struct {name}<T> {{\n",
+                "/// {}\n///\n/// Blades {}, laid out in this order like `[T; {n}]` (`repr(C)`).\n\
+                    #[derive(Clone, Copy, Debug, Default, PartialEq)]\n#[repr(C)]\npub struct \
+                    {name}<T> {{\n",
                 spec.doc,
                 blade_list.join(", ")
             )
@@ -791,6 +792,13 @@ pub fn algebra_files(alg: &Resolved<'_>) -> (Vec<(String, String)>, Vec<Impl>) {
     if alg.spec.emit_types {
         let names: Vec<&str> = alg.spec.types.iter().map(|t| t.name).collect();
         writeln!(m, "\npub use types::{{{}}};", names.join(", ")).expect("w");
+    }
+    if alg.spec.lanes {
+        files.push(("lanes.rs".to_owned(), crate::lanes::lanes_file(alg)));
+        m.push_str(
+            "\n#[cfg(all(target_arch = \"x86_64\", target_feature = \"avx2\", \
+             target_feature = \"fma\"))]\npub(crate) mod lanes;\n",
+        );
     }
     files.push(("mod.rs".to_owned(), m));
     let hand: Vec<String> = alg

@@ -23,6 +23,7 @@
 
 pub mod algebras;
 pub mod emit;
+pub mod lanes;
 pub mod model;
 pub mod products;
 pub mod testgen;

@@ -31,6 +31,9 @@ pub struct AlgebraSpec {
     /// `(product, left, right)` kernels written by hand; the generated form becomes a
     /// `pub(crate)` function named `{product}_{left}_{right}` (snake case) to check them with.
     pub hand_written: &'static [(&'static str, &'static str, &'static str)],
+    /// Whether `Multivector * Multivector` also gets the lane-by-lane AVX2 kernel of
+    /// [`crate::lanes`] (in `lanes.rs`).
+    pub lanes: bool,
     /// The types that may be the versor of a sandwich.
     pub versors: &'static [&'static str],
     /// The types a versor may be applied to.

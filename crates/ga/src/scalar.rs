@@ -12,6 +12,10 @@ mod sealed {
         fn rotor_reverse(a: [Self; 4]) -> [Self; 4];
         /// `Σ_k columns[k] p[k]`: a 4×4 matrix, by columns, times a 4-vector.
         fn map_point(columns: &[[Self; 4]; 4], p: [Self; 4]) -> [Self; 4];
+        /// The geometric product of two R(3,0,1) multivectors, coefficients in basis order.
+        fn pga_geometric(a: &[Self; 16], b: &[Self; 16]) -> [Self; 16];
+        /// The geometric product of two R(4,1) multivectors, coefficients in basis order.
+        fn cga_geometric(a: &[Self; 32], b: &[Self; 32]) -> [Self; 32];
     }
 }
 
@@ -64,6 +68,20 @@ impl sealed::Kernels for f32 {
     fn map_point(columns: &[[f32; 4]; 4], p: [f32; 4]) -> [f32; 4] {
         with_simd!(crate::pga::simd::map_point_f32(columns, p), portable_map_point(columns, p))
     }
+    #[inline]
+    fn pga_geometric(a: &[f32; 16], b: &[f32; 16]) -> [f32; 16] {
+        with_simd!(
+            crate::pga::generated::lanes::geometric_f32(a, b),
+            crate::pga::geometric::blockwise(a, b)
+        )
+    }
+    #[inline]
+    fn cga_geometric(a: &[f32; 32], b: &[f32; 32]) -> [f32; 32] {
+        with_simd!(
+            crate::cga::generated::lanes::geometric_f32(a, b),
+            crate::cga::geometric::blockwise(a, b)
+        )
+    }
 }
 
 impl sealed::Kernels for f64 {
@@ -83,6 +101,20 @@ impl sealed::Kernels for f64 {
     #[inline]
     fn map_point(columns: &[[f64; 4]; 4], p: [f64; 4]) -> [f64; 4] {
         with_simd!(crate::pga::simd::map_point_f64(columns, p), portable_map_point(columns, p))
+    }
+    #[inline]
+    fn pga_geometric(a: &[f64; 16], b: &[f64; 16]) -> [f64; 16] {
+        with_simd!(
+            crate::pga::generated::lanes::geometric_f64(a, b),
+            crate::pga::geometric::blockwise(a, b)
+        )
+    }
+    #[inline]
+    fn cga_geometric(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
+        with_simd!(
+            crate::cga::generated::lanes::geometric_f64(a, b),
+            crate::cga::geometric::blockwise(a, b)
+        )
     }
 }
 

@@ -1,4 +1,11 @@
-//! `Multivector * Multivector` written by hand on G3's kernel: R(4,1) as four copies of G3.
+//! `Multivector * Multivector`: lane by lane, or R(4,1) as four copies of G3.
+//!
+//! Where the build has AVX2 and FMA, the product is the kernel `ga-codegen` writes to
+//! `generated/lanes.rs`: blades by bitmask, `e1, e2, e3` the lane bits and `e4, e5` the block
+//! bits (f32; f64 makes `e3` a block bit too), so output block `B` is a sum of broadcast
+//! coefficients of `a` times signed lane permutations of the blocks of `b`: 128 eight-lane
+//! fused multiply-adds for the 1,024 terms (the derivation is in
+//! `crates/ga-codegen/src/lanes.rs`). Elsewhere it is `blockwise`:
 //!
 //! Every blade of R(4,1) is a G3 blade followed by one of `1, e4, e5, e45` (the basis is in
 //! increasing generator order, so `e_S e4 = e_S4` with no sign), and so
@@ -48,42 +55,64 @@ fn split<T: Scalar>(a: Multivector<T>) -> [[T; 8]; 4] {
     })
 }
 
-/// Geometric product `Multivector * Multivector -> Multivector`: the sixteen G3 products of
-/// the module docs.
+/// `m`'s coefficients in basis order where `m` lies. Read through a copy (`to_array`), the
+/// kernel's vector loads would wait on the copy's narrower stores (store forwarding fails).
+#[inline]
+fn in_place<T>(m: &Multivector<T>) -> &[T; 32] {
+    const { assert!(size_of::<Multivector<f64>>() == size_of::<[f64; 32]>()) };
+    // SAFETY: `Multivector` is `repr(C)` with 32 fields of type `T` in basis order, so it has
+    // the size, alignment and layout of `[T; 32]` (checked above for f64).
+    unsafe { &*core::ptr::from_ref(m).cast::<[T; 32]>() }
+}
+
+/// Geometric product `Multivector * Multivector -> Multivector`: the generated lane-by-lane
+/// kernel of `generated/lanes.rs` where the build has AVX2 and FMA, else `blockwise` (the
+/// portable kernel below).
 impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        let (a, b) = (split(self), split(b));
-        let flipped = b.map(involution);
-        let mut parts = [[T::ZERO; 8]; 4];
-        for p in 0..4 {
-            let (i, j) = (p & 1, p >> 1);
-            for q in 0..4 {
-                let (k, l) = (q & 1, q >> 1);
-                let right = if (i + j) % 2 == 1 { &flipped[q] } else { &b[q] };
-                let product = T::geometric_product(&a[p], right);
-                let out = &mut parts[p ^ q];
-                if j * (k + l) % 2 == 1 {
-                    for (o, x) in out.iter_mut().zip(product) {
-                        *o -= x;
-                    }
-                } else {
-                    for (o, x) in out.iter_mut().zip(product) {
-                        *o += x;
-                    }
+        Multivector::from_array(T::cga_geometric(in_place(&self), in_place(&b)))
+    }
+}
+
+/// `a b` as the sixteen G3 products of the module docs (coefficients in basis order): the
+/// portable kernel.
+#[cfg_attr(
+    all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma", not(test)),
+    allow(dead_code)
+)]
+#[inline]
+pub(crate) fn blockwise<T: Scalar>(a: &[T; 32], b: &[T; 32]) -> [T; 32] {
+    let (a, b) = (split(Multivector::from_array(*a)), split(Multivector::from_array(*b)));
+    let flipped = b.map(involution);
+    let mut parts = [[T::ZERO; 8]; 4];
+    for p in 0..4 {
+        let (i, j) = (p & 1, p >> 1);
+        for q in 0..4 {
+            let (k, l) = (q & 1, q >> 1);
+            let right = if (i + j) % 2 == 1 { &flipped[q] } else { &b[q] };
+            let product = T::geometric_product(&a[p], right);
+            let out = &mut parts[p ^ q];
+            if j * (k + l) % 2 == 1 {
+                for (o, x) in out.iter_mut().zip(product) {
+                    *o -= x;
+                }
+            } else {
+                for (o, x) in out.iter_mut().zip(product) {
+                    *o += x;
                 }
             }
         }
-        let mut c = [T::ZERO; 32];
-        for (lanes, mut part) in LANES.iter().zip(parts) {
-            part[5] = -part[5];
-            for (&i, x) in lanes.iter().zip(part) {
-                c[i] = x;
-            }
-        }
-        Multivector::from_array(c)
     }
+    let mut c = [T::ZERO; 32];
+    for (lanes, mut part) in LANES.iter().zip(parts) {
+        part[5] = -part[5];
+        for (&i, x) in lanes.iter().zip(part) {
+            c[i] = x;
+        }
+    }
+    c
 }
 
 impl<T: Scalar> MulAssign for Multivector<T> {
@@ -109,9 +138,12 @@ mod tests {
             let b = Multivector::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
             let want = geometric_multivector_multivector(a, b).to_array();
             assert!(close((a * b).to_array(), want, 1e-14), "{a:?} {b:?}");
+            assert!(close(blockwise(&a.to_array(), &b.to_array()), want, 1e-14), "{a:?} {b:?}");
             let f = |m: Multivector<f64>| Multivector::from_array(m.to_array().map(|v| v as f32));
-            let got32 = (f(a) * f(b)).to_array().map(f64::from);
             let want32 = geometric_multivector_multivector(f(a), f(b)).to_array().map(f64::from);
+            let got32 = (f(a) * f(b)).to_array().map(f64::from);
+            assert!(close(got32, want32, 1e-5), "{a:?} {b:?}");
+            let got32 = blockwise(&f(a).to_array(), &f(b).to_array()).map(f64::from);
             assert!(close(got32, want32, 1e-5), "{a:?} {b:?}");
         }
     }
@@ -126,6 +158,7 @@ mod tests {
             for j in 0..32 {
                 let want = geometric_multivector_multivector(e(i), e(j)).to_array();
                 assert_eq!((e(i) * e(j)).to_array(), want, "{i} {j}");
+                assert_eq!(blockwise(&e(i).to_array(), &e(j).to_array()), want, "{i} {j}");
             }
         }
     }

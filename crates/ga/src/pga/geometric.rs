@@ -1,21 +1,27 @@
-//! The geometric products written by hand on G3's kernels: R(3,0,1) is G3 extended by a
-//! generator that squares to zero.
+//! The geometric products of R(3,0,1) that are not the generated term-by-term expansions.
 //!
-//! # `Multivector * Multivector`: three G3 products
+//! # `Multivector * Multivector`: lane by lane, or three G3 products
 //!
-//! Every blade of R(3,0,1) is a blade of G3 or `e0` times one, so `a = A + e0 A'` and
-//! `b = B + e0 B'` with `A, A', B, B'` in G3. `e0` anticommutes with `e1, e2, e3`, so
-//! `X e0 = e0 X̂` (the grade involution), and `e0² = 0`:
+//! Where the build has AVX2 and FMA, the product is the kernel `ga-codegen` writes to
+//! `generated/lanes.rs`: blades by bitmask, `e0` the block bit and `e1, e2, e3` the lane bits
+//! (f32; f64 makes `e3` a second block bit), so output block `B` is a sum of broadcast
+//! coefficients of `a` times signed lane permutations of the blocks of `b`, and the products
+//! that meet `e0` twice are whole blocks never formed: 24 eight-lane fused multiply-adds for
+//! the 192 non-zero terms (the derivation is in `crates/ga-codegen/src/lanes.rs`).
+//!
+//! Elsewhere it is `blockwise`: every blade of R(3,0,1) is a blade of G3 or `e0` times one,
+//! so `a = A + e0 A'` and `b = B + e0 B'` with `A, A', B, B'` in G3. `e0` anticommutes with
+//! `e1, e2, e3`, so `X e0 = e0 X̂` (the grade involution), and `e0² = 0`:
 //!
 //! `a b = A B + e0 (Â B' + A' B)`.
 //!
 //! That is three G3 geometric products, 192 terms: exactly the non-zero entries of the 16 x 16
-//! Cayley table (the 64 pairs that meet `e0` twice are never formed). Each product is G3's
-//! kernel behind `T::geometric_product` (the AVX2 kernel of `g3::simd` where the build has it),
-//! so PGA inherits its SIMD layout instead of a 192-term scalar expansion. The split into G3
+//! Cayley table. Each product is G3's kernel behind `T::geometric_product`. The split into G3
 //! parts is a relabelling: `e0` times `e1, e2, e3, e123` are `e01, e02, e03, e0123`, and times
 //! `e12, e31, e23` are `e012 = -e021`, `e031 = -e013`, `e023 = -e032`, so those three lanes
 //! change sign.
+//!
+//! Both forms sum the same products as the expansion for each coefficient, in another order.
 //!
 //! # `Motor * Motor`: dual quaternions
 //!
@@ -30,7 +36,7 @@
 //! three quaternion products (G3's `T::rotor_product`, an SSE kernel for f32): the 48 terms of
 //! the expansion, on four lanes.
 //!
-//! The tests check both against the generated term-by-term expansions.
+//! The tests check every kernel here against the generated term-by-term expansions.
 
 use core::ops::{Mul, MulAssign};
 
@@ -53,36 +59,60 @@ fn involution<T: Scalar>(c: [T; 8]) -> [T; 8] {
     crate::g3::Multivector { c }.grade_involution().c
 }
 
-/// Geometric product `Multivector * Multivector -> Multivector`: `A B + e0 (Â B' + A' B)`, the
-/// three G3 products of the module docs.
+/// `m`'s coefficients in basis order where `m` lies. Read through a copy (`to_array`), the
+/// kernel's vector loads would wait on the copy's narrower stores (store forwarding fails).
+#[inline]
+fn in_place<T>(m: &Multivector<T>) -> &[T; 16] {
+    const { assert!(size_of::<Multivector<f64>>() == size_of::<[f64; 16]>()) };
+    // SAFETY: `Multivector` is `repr(C)` with 16 fields of type `T` in basis order, so it has
+    // the size, alignment and layout of `[T; 16]` (checked above for f64).
+    unsafe { &*core::ptr::from_ref(m).cast::<[T; 16]>() }
+}
+
+/// Geometric product `Multivector * Multivector -> Multivector`: the generated lane-by-lane
+/// kernel of `generated/lanes.rs` where the build has AVX2 and FMA, else `blockwise` (the
+/// portable kernel below).
 impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        let ((a0, a1), (b0, b1)) = (split(self), split(b));
-        let c = T::geometric_product(&a0, &b0);
-        let x = T::geometric_product(&involution(a0), &b1);
-        let y = T::geometric_product(&a1, &b0);
-        let d: [T; 8] = core::array::from_fn(|i| x[i] + y[i]);
-        Multivector {
-            s: c[0],
-            e0: d[0],
-            e1: c[1],
-            e2: c[2],
-            e3: c[4],
-            e01: d[1],
-            e02: d[2],
-            e03: d[4],
-            e12: c[3],
-            e31: c[5],
-            e23: c[6],
-            e021: -d[3],
-            e013: -d[5],
-            e032: -d[6],
-            e123: c[7],
-            e0123: d[7],
-        }
+        Multivector::from_array(T::pga_geometric(in_place(&self), in_place(&b)))
     }
+}
+
+/// `a b` as `A B + e0 (Â B' + A' B)`, the three G3 products of the module docs (coefficients
+/// in basis order): the portable kernel.
+#[cfg_attr(
+    all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma", not(test)),
+    allow(dead_code)
+)]
+#[inline]
+pub(crate) fn blockwise<T: Scalar>(a: &[T; 16], b: &[T; 16]) -> [T; 16] {
+    let ((a0, a1), (b0, b1)) =
+        (split(Multivector::from_array(*a)), split(Multivector::from_array(*b)));
+    let c = T::geometric_product(&a0, &b0);
+    let x = T::geometric_product(&involution(a0), &b1);
+    let y = T::geometric_product(&a1, &b0);
+    let d: [T; 8] = core::array::from_fn(|i| x[i] + y[i]);
+    Multivector {
+        s: c[0],
+        e0: d[0],
+        e1: c[1],
+        e2: c[2],
+        e3: c[4],
+        e01: d[1],
+        e02: d[2],
+        e03: d[4],
+        e12: c[3],
+        e31: c[5],
+        e23: c[6],
+        e021: -d[3],
+        e013: -d[5],
+        e032: -d[6],
+        e123: c[7],
+        e0123: d[7],
+    }
+    .to_array()
 }
 
 /// Geometric product `Motor * Motor -> Motor`: composition of motions (`(M2 * M1)` applies
@@ -142,9 +172,12 @@ mod tests {
             let b = Multivector::<f64>::from_array(core::array::from_fn(|_| x.next().unwrap()));
             let want = geometric_multivector_multivector(a, b).to_array();
             assert!(close((a * b).to_array(), want, 1e-14), "{a:?} {b:?}");
+            assert!(close(blockwise(&a.to_array(), &b.to_array()), want, 1e-14), "{a:?} {b:?}");
             let f = |m: Multivector<f64>| Multivector::from_array(m.to_array().map(|v| v as f32));
-            let got32 = (f(a) * f(b)).to_array().map(f64::from);
             let want32 = geometric_multivector_multivector(f(a), f(b)).to_array().map(f64::from);
+            let got32 = (f(a) * f(b)).to_array().map(f64::from);
+            assert!(close(got32, want32, 1e-5), "{a:?} {b:?}");
+            let got32 = blockwise(&f(a).to_array(), &f(b).to_array()).map(f64::from);
             assert!(close(got32, want32, 1e-5), "{a:?} {b:?}");
 
             let m = |x: &mut dyn Iterator<Item = f64>| {
@@ -169,6 +202,7 @@ mod tests {
             for j in 0..16 {
                 let want = geometric_multivector_multivector(e(i), e(j)).to_array();
                 assert_eq!((e(i) * e(j)).to_array(), want, "{i} {j}");
+                assert_eq!(blockwise(&e(i).to_array(), &e(j).to_array()), want, "{i} {j}");
             }
         }
     }

@@ -98,8 +98,8 @@
 //!
 #![doc = include_str!("generated/products.md")]
 
-mod generated;
-mod geometric;
+pub(crate) mod generated;
+pub(crate) mod geometric;
 pub mod geometry;
 #[cfg(feature = "glam")]
 mod glam_interop;

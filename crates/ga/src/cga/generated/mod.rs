@@ -14,5 +14,8 @@ mod types;
 
 pub use types::{Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector};
 
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+pub(crate) mod lanes;
+
 #[cfg_attr(not(test), allow(unused_imports))]
 pub(crate) use geometric::geometric_multivector_multivector;

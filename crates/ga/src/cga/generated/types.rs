@@ -8,8 +8,9 @@ use crate::Scalar;
 
 /// A vector (grade 1): points, dual spheres and dual planes.
 ///
-/// Blades `e1`, `e2`, `e3`, `e4`, `e5`.
+/// Blades `e1`, `e2`, `e3`, `e4`, `e5`, laid out in this order like `[T; 5]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Vector<T> {
     /// Coefficient of `e1`.
     pub e1: T,
@@ -232,8 +233,10 @@ impl Mul<Vector<f64>> for f64 {
 
 /// A bivector (grade 2): point pairs (dual).
 ///
-/// Blades `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`.
+/// Blades `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, laid out in this
+/// order like `[T; 10]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Bivector<T> {
     /// Coefficient of `e12`.
     pub e12: T,
@@ -692,8 +695,10 @@ impl Mul<Bivector<f64>> for f64 {
 
 /// A trivector (grade 3): circles and lines.
 ///
-/// Blades `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`, `e345`.
+/// Blades `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`, `e345`, laid out
+/// in this order like `[T; 10]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Trivector<T> {
     /// Coefficient of `e123`.
     pub e123: T,
@@ -1153,8 +1158,10 @@ impl Mul<Trivector<f64>> for f64 {
 
 /// A quadvector (grade 4): spheres and planes.
 ///
-/// Blades `e1234`, `e1235`, `e1245`, `e1345`, `e2345`.
+/// Blades `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, laid out in this order like `[T; 5]`
+/// (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Quadvector<T> {
     /// Coefficient of `e1234`.
     pub e1234: T,
@@ -1392,8 +1399,9 @@ impl Mul<Quadvector<f64>> for f64 {
 
 /// A multiple of the pseudoscalar `e12345`.
 ///
-/// Blades `e12345`.
+/// Blades `e12345`, laid out in this order like `[T; 1]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Pseudoscalar<T> {
     /// Coefficient of `e12345`.
     pub e12345: T,
@@ -1563,8 +1571,9 @@ impl Mul<Pseudoscalar<f64>> for f64 {
 
 /// A Euclidean rotor: a rotation about the origin (scalar and `e12, e13, e23`).
 ///
-/// Blades `1`, `e12`, `e13`, `e23`.
+/// Blades `1`, `e12`, `e13`, `e23`, laid out in this order like `[T; 4]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Rotor<T> {
     /// The scalar part.
     pub s: T,
@@ -1824,8 +1833,9 @@ impl Mul<Rotor<f64>> for f64 {
 /// products.
 ///
 /// Blades `1`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`, `e34`, `e35`, `e45`, `e1234`,
-/// `e1235`, `e1245`, `e1345`, `e2345`.
+/// `e1235`, `e1245`, `e1345`, `e2345`, laid out in this order like `[T; 16]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Motor<T> {
     /// The scalar part.
     pub s: T,
@@ -2604,8 +2614,10 @@ impl Mul<Motor<f64>> for f64 {
 ///
 /// Blades `1`, `e1`, `e2`, `e3`, `e4`, `e5`, `e12`, `e13`, `e14`, `e15`, `e23`, `e24`, `e25`,
 /// `e34`, `e35`, `e45`, `e123`, `e124`, `e125`, `e134`, `e135`, `e145`, `e234`, `e235`, `e245`,
-/// `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`.
+/// `e345`, `e1234`, `e1235`, `e1245`, `e1345`, `e2345`, `e12345`, laid out in this order like `[T;
+/// 32]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Multivector<T> {
     /// The scalar part.
     pub s: T,

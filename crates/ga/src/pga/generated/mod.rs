@@ -14,6 +14,9 @@ mod types;
 
 pub use types::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+pub(crate) mod lanes;
+
 #[cfg_attr(not(test), allow(unused_imports))]
 pub(crate) use geometric::geometric_motor_motor;
 #[cfg_attr(not(test), allow(unused_imports))]

@@ -8,8 +8,9 @@ use crate::Scalar;
 
 /// A plane (grade 1) `e0 e0 + e1 e1 + e2 e2 + e3 e3`: the plane `e1 x + e2 y + e3 z + e0 = 0`.
 ///
-/// Blades `e0`, `e1`, `e2`, `e3`.
+/// Blades `e0`, `e1`, `e2`, `e3`, laid out in this order like `[T; 4]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Plane<T> {
     /// Coefficient of `e0`.
     pub e0: T,
@@ -191,8 +192,10 @@ impl Mul<Plane<f64>> for f64 {
 
 /// A line (grade 2): the ideal part `e01, e02, e03` and the Euclidean part `e12, e31, e23`.
 ///
-/// Blades `e01`, `e02`, `e03`, `e12`, `e31`, `e23`.
+/// Blades `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, laid out in this order like `[T; 6]`
+/// (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Line<T> {
     /// Coefficient of `e01`.
     pub e01: T,
@@ -453,8 +456,9 @@ impl Mul<Line<f64>> for f64 {
 /// A point (grade 3) `x e032 + y e013 + z e021 + w e123`: the Euclidean point `(x, y, z) / w`, or
 /// the direction `(x, y, z)` when `w = 0` (an ideal point).
 ///
-/// Blades `e021`, `e013`, `e032`, `e123`.
+/// Blades `e021`, `e013`, `e032`, `e123`, laid out in this order like `[T; 4]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Point<T> {
     /// Coefficient of `e021`.
     pub e021: T,
@@ -646,8 +650,10 @@ impl Mul<Point<f64>> for f64 {
 
 /// A motor (the even subalgebra): rotations, translations and screws.
 ///
-/// Blades `1`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e0123`.
+/// Blades `1`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e0123`, laid out in this order like `[T;
+/// 8]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Motor<T> {
     /// The scalar part.
     pub s: T,
@@ -945,8 +951,9 @@ impl Mul<Motor<f64>> for f64 {
 
 /// A rotor: a rotation about an axis through the origin (scalar and Euclidean bivector).
 ///
-/// Blades `1`, `e12`, `e31`, `e23`.
+/// Blades `1`, `e12`, `e31`, `e23`, laid out in this order like `[T; 4]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Rotor<T> {
     /// The scalar part.
     pub s: T,
@@ -1156,8 +1163,9 @@ impl Mul<Rotor<f64>> for f64 {
 
 /// A translator: a translation (scalar and ideal bivector).
 ///
-/// Blades `1`, `e01`, `e02`, `e03`.
+/// Blades `1`, `e01`, `e02`, `e03`, laid out in this order like `[T; 4]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Translator<T> {
     /// The scalar part.
     pub s: T,
@@ -1367,8 +1375,9 @@ impl Mul<Translator<f64>> for f64 {
 
 /// A multiple of the pseudoscalar `e0123`.
 ///
-/// Blades `e0123`.
+/// Blades `e0123`, laid out in this order like `[T; 1]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Pseudoscalar<T> {
     /// Coefficient of `e0123`.
     pub e0123: T,
@@ -1539,8 +1548,9 @@ impl Mul<Pseudoscalar<f64>> for f64 {
 /// A general multivector of R(3,0,1), sixteen coefficients in the basis order.
 ///
 /// Blades `1`, `e0`, `e1`, `e2`, `e3`, `e01`, `e02`, `e03`, `e12`, `e31`, `e23`, `e021`, `e013`,
-/// `e032`, `e123`, `e0123`.
+/// `e032`, `e123`, `e0123`, laid out in this order like `[T; 16]` (`repr(C)`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C)]
 pub struct Multivector<T> {
     /// The scalar part.
     pub s: T,
