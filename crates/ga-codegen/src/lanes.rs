@@ -266,9 +266,9 @@ fn kernel(alg: &Resolved<'_>, p: Precision) -> String {
          stall the vector loads (store forwarding fails).\n/// No `#[target_feature]`: the \
          module is compiled only where the build enables AVX2 and FMA.\n#[inline(always)]\n\
          #[allow(clippy::too_many_lines)]\npub(crate) fn geometric_{ty}(a: &[{ty}; {n}], b: \
-         &[{ty}; {n}]) -> [{ty}; {n}] {{\n    // SAFETY: the intrinsics need AVX2 and FMA, which the build enables wherever this \
-         module\n    // is compiled; the stores write the {w}-lane blocks of `out`, which has {n} \
-         lanes.\n    unsafe {{",
+         &[{ty}; {n}]) -> [{ty}; {n}] {{\n    // SAFETY: the intrinsics need AVX2 and FMA, \
+         which the build enables wherever this module\n    // is compiled; the stores write \
+         the {w}-lane blocks of `out`, which has {n} lanes.\n    unsafe {{",
         groups.iter().filter(|g| g.x != 0).count()
     )
     .expect("w");
@@ -355,8 +355,8 @@ pub fn lanes_file(alg: &Resolved<'_>) -> String {
          `B`\n//! gains, for each blade `e_i` of `a`, `a_i` times block `B XOR block(i)` of `b` \
          with its lanes\n//! permuted by `l ↦ l XOR lane(i)` and signed. Each permuted block of \
          `b` is formed once, with one\n//! sign pattern, and serves every output block (how the \
-         signs split that way, and the layout,\n//! are derived in `crates/ga-codegen/src/lanes.rs`).\
-         \n\nuse core::arch::x86_64::*;\n\n{}\n{}",
+         signs split that way, and the layout,\n//! are derived in \
+         `crates/ga-codegen/src/lanes.rs`).\n\nuse core::arch::x86_64::*;\n\n{}\n{}",
         kernel(alg, Precision::F32),
         kernel(alg, Precision::F64)
     )
