@@ -531,7 +531,14 @@ impl Resolved<'_> {
                  pub const fn from_array(a: [T; {n}]) -> Self {{\n        Self::new({i})\n\
                  }}\n\n\
                  \x20   /// As `[{fl}]`.\n    #[must_use]\n    #[inline]\n\
-                 pub const fn to_array(self) -> [T; {n}] {{\n        [{s}]\n    }}\n\n",
+                 pub const fn to_array(self) -> [T; {n}] {{\n        [{s}]\n    }}\n\n\
+                 \x20   /// The coefficients in place, as `[{fl}]` (no copy: the struct is \
+                 `repr(C)` in that\n    /// order).\n    #[must_use]\n    #[inline]\n\
+                 pub const fn as_array(&self) -> &[T; {n}] {{\n        const {{ \
+                 assert!(size_of::<Self>() == size_of::<[T; {n}]>()) }};\n        // SAFETY: \
+                 `Self` is `repr(C)` with {n} fields of type `T`, so it has the layout of\n        \
+                 // `[T; {n}]` (sizes checked above).\n        unsafe {{ \
+                 &*core::ptr::from_ref(self).cast::<[T; {n}]>() }}\n    }}\n\n",
                 list = blade_list.join(", "),
                 p = params.join(", "),
                 f = fields.join(", "),

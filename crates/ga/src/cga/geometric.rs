@@ -55,16 +55,6 @@ fn split<T: Scalar>(a: Multivector<T>) -> [[T; 8]; 4] {
     })
 }
 
-/// `m`'s coefficients in basis order where `m` lies. Read through a copy (`to_array`), the
-/// kernel's vector loads would wait on the copy's narrower stores (store forwarding fails).
-#[inline]
-fn in_place<T>(m: &Multivector<T>) -> &[T; 32] {
-    const { assert!(size_of::<Multivector<f64>>() == size_of::<[f64; 32]>()) };
-    // SAFETY: `Multivector` is `repr(C)` with 32 fields of type `T` in basis order, so it has
-    // the size, alignment and layout of `[T; 32]` (checked above for f64).
-    unsafe { &*core::ptr::from_ref(m).cast::<[T; 32]>() }
-}
-
 /// Geometric product `Multivector * Multivector -> Multivector`: the generated lane-by-lane
 /// kernel of `generated/lanes.rs` where the build has AVX2 and FMA, else `blockwise` (the
 /// portable kernel below).
@@ -72,7 +62,9 @@ impl<T: Scalar> Mul<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
-        Multivector::from_array(T::cga_geometric(in_place(&self), in_place(&b)))
+        // In place: through copies (`to_array`), the kernel's vector loads would wait on the
+        // copies' narrower stores (store forwarding fails).
+        Multivector::from_array(T::cga_geometric(self.as_array(), b.as_array()))
     }
 }
 

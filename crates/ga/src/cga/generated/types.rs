@@ -59,6 +59,18 @@ impl<T: Scalar> Vector<T> {
         [self.e1, self.e2, self.e3, self.e4, self.e5]
     }
 
+    /// The coefficients in place, as `[e1, e2, e3, e4, e5]` (no copy: the struct is `repr(C)` in
+    /// that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 5] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 5]>()) };
+        // SAFETY: `Self` is `repr(C)` with 5 fields of type `T`, so it has the layout of
+        // `[T; 5]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 5]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -440,6 +452,18 @@ impl<T: Scalar> Bivector<T> {
             self.e12, self.e13, self.e14, self.e15, self.e23, self.e24, self.e25, self.e34,
             self.e35, self.e45,
         ]
+    }
+
+    /// The coefficients in place, as `[e12, e13, e14, e15, e23, e24, e25, e34, e35, e45]` (no copy:
+    /// the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 10] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 10]>()) };
+        // SAFETY: `Self` is `repr(C)` with 10 fields of type `T`, so it has the layout of
+        // `[T; 10]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 10]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -904,6 +928,18 @@ impl<T: Scalar> Trivector<T> {
         ]
     }
 
+    /// The coefficients in place, as `[e123, e124, e125, e134, e135, e145, e234, e235, e245, e345]`
+    /// (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 10] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 10]>()) };
+        // SAFETY: `Self` is `repr(C)` with 10 fields of type `T`, so it has the layout of
+        // `[T; 10]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 10]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -1210,6 +1246,18 @@ impl<T: Scalar> Quadvector<T> {
         [self.e1234, self.e1235, self.e1245, self.e1345, self.e2345]
     }
 
+    /// The coefficients in place, as `[e1234, e1235, e1245, e1345, e2345]` (no copy: the struct is
+    /// `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 5] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 5]>()) };
+        // SAFETY: `Self` is `repr(C)` with 5 fields of type `T`, so it has the layout of
+        // `[T; 5]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 5]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -1434,6 +1482,17 @@ impl<T: Scalar> Pseudoscalar<T> {
         [self.e12345]
     }
 
+    /// The coefficients in place, as `[e12345]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 1] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 1]>()) };
+        // SAFETY: `Self` is `repr(C)` with 1 fields of type `T`, so it has the layout of
+        // `[T; 1]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 1]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -1616,6 +1675,17 @@ impl<T: Scalar> Rotor<T> {
     #[inline]
     pub const fn to_array(self) -> [T; 4] {
         [self.s, self.e12, self.e13, self.e23]
+    }
+
+    /// The coefficients in place, as `[s, e12, e13, e23]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 4] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 4]>()) };
+        // SAFETY: `Self` is `repr(C)` with 4 fields of type `T`, so it has the layout of
+        // `[T; 4]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 4]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -2259,6 +2329,18 @@ impl<T: Scalar> Motor<T> {
             self.s, self.e12, self.e13, self.e14, self.e15, self.e23, self.e24, self.e25, self.e34,
             self.e35, self.e45, self.e1234, self.e1235, self.e1245, self.e1345, self.e2345,
         ]
+    }
+
+    /// The coefficients in place, as `[s, e12, e13, e14, e15, e23, e24, e25, e34, e35, e45, e1234,
+    /// e1235, e1245, e1345, e2345]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 16] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 16]>()) };
+        // SAFETY: `Self` is `repr(C)` with 16 fields of type `T`, so it has the layout of
+        // `[T; 16]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 16]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -3969,6 +4051,19 @@ impl<T: Scalar> Multivector<T> {
             self.e2345,
             self.e12345,
         ]
+    }
+
+    /// The coefficients in place, as `[s, e1, e2, e3, e4, e5, e12, e13, e14, e15, e23, e24, e25,
+    /// e34, e35, e45, e123, e124, e125, e134, e135, e145, e234, e235, e245, e345, e1234, e1235,
+    /// e1245, e1345, e2345, e12345]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 32] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 32]>()) };
+        // SAFETY: `Self` is `repr(C)` with 32 fields of type `T`, so it has the layout of
+        // `[T; 32]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 32]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.

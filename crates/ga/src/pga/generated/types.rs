@@ -55,6 +55,17 @@ impl<T: Scalar> Plane<T> {
         [self.e0, self.e1, self.e2, self.e3]
     }
 
+    /// The coefficients in place, as `[e0, e1, e2, e3]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 4] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 4]>()) };
+        // SAFETY: `Self` is `repr(C)` with 4 fields of type `T`, so it has the layout of
+        // `[T; 4]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 4]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -246,6 +257,18 @@ impl<T: Scalar> Line<T> {
     #[inline]
     pub const fn to_array(self) -> [T; 6] {
         [self.e01, self.e02, self.e03, self.e12, self.e31, self.e23]
+    }
+
+    /// The coefficients in place, as `[e01, e02, e03, e12, e31, e23]` (no copy: the struct is
+    /// `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 6] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 6]>()) };
+        // SAFETY: `Self` is `repr(C)` with 6 fields of type `T`, so it has the layout of
+        // `[T; 6]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 6]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -503,6 +526,18 @@ impl<T: Scalar> Point<T> {
         [self.e021, self.e013, self.e032, self.e123]
     }
 
+    /// The coefficients in place, as `[e021, e013, e032, e123]` (no copy: the struct is `repr(C)`
+    /// in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 4] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 4]>()) };
+        // SAFETY: `Self` is `repr(C)` with 4 fields of type `T`, so it has the layout of
+        // `[T; 4]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 4]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -722,6 +757,18 @@ impl<T: Scalar> Motor<T> {
     #[inline]
     pub const fn to_array(self) -> [T; 8] {
         [self.s, self.e01, self.e02, self.e03, self.e12, self.e31, self.e23, self.e0123]
+    }
+
+    /// The coefficients in place, as `[s, e01, e02, e03, e12, e31, e23, e0123]` (no copy: the
+    /// struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 8] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 8]>()) };
+        // SAFETY: `Self` is `repr(C)` with 8 fields of type `T`, so it has the layout of
+        // `[T; 8]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 8]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -998,6 +1045,17 @@ impl<T: Scalar> Rotor<T> {
         [self.s, self.e12, self.e31, self.e23]
     }
 
+    /// The coefficients in place, as `[s, e12, e31, e23]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 4] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 4]>()) };
+        // SAFETY: `Self` is `repr(C)` with 4 fields of type `T`, so it has the layout of
+        // `[T; 4]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 4]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -1210,6 +1268,17 @@ impl<T: Scalar> Translator<T> {
         [self.s, self.e01, self.e02, self.e03]
     }
 
+    /// The coefficients in place, as `[s, e01, e02, e03]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 4] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 4]>()) };
+        // SAFETY: `Self` is `repr(C)` with 4 fields of type `T`, so it has the layout of
+        // `[T; 4]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 4]>() }
+    }
+
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
     #[must_use]
     #[inline]
@@ -1408,6 +1477,17 @@ impl<T: Scalar> Pseudoscalar<T> {
     #[inline]
     pub const fn to_array(self) -> [T; 1] {
         [self.e0123]
+    }
+
+    /// The coefficients in place, as `[e0123]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 1] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 1]>()) };
+        // SAFETY: `Self` is `repr(C)` with 1 fields of type `T`, so it has the layout of
+        // `[T; 1]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 1]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
@@ -1955,6 +2035,18 @@ impl<T: Scalar> Multivector<T> {
             self.s, self.e0, self.e1, self.e2, self.e3, self.e01, self.e02, self.e03, self.e12,
             self.e31, self.e23, self.e021, self.e013, self.e032, self.e123, self.e0123,
         ]
+    }
+
+    /// The coefficients in place, as `[s, e0, e1, e2, e3, e01, e02, e03, e12, e31, e23, e021, e013,
+    /// e032, e123, e0123]` (no copy: the struct is `repr(C)` in that
+    /// order).
+    #[must_use]
+    #[inline]
+    pub const fn as_array(&self) -> &[T; 16] {
+        const { assert!(size_of::<Self>() == size_of::<[T; 16]>()) };
+        // SAFETY: `Self` is `repr(C)` with 16 fields of type `T`, so it has the layout of
+        // `[T; 16]` (sizes checked above).
+        unsafe { &*core::ptr::from_ref(self).cast::<[T; 16]>() }
     }
 
     /// The reverse: grade `k` times `(-1)^(k(k-1)/2)`.
