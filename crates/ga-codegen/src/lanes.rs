@@ -61,9 +61,7 @@ struct Layout {
     width: usize,
     /// Blocks.
     blocks: usize,
-    /// For internal index `block * width + lane`: the documented blade there.
-    blade_at: Vec<usize>,
-    /// For internal index `k`: the storage slot of the blade there.
+    /// For internal index `block * width + lane`: the storage slot of the blade there.
     slot_at: Vec<usize>,
     /// For internal index `k`: `documented blade = rel[k] * internal blade`.
     rel: Vec<f64>,
@@ -129,7 +127,7 @@ impl Layout {
                     .collect()
             })
             .collect();
-        Self { width, blocks: n / width, blade_at, slot_at, rel, sign }
+        Self { width, blocks: n / width, slot_at, rel, sign }
     }
 }
 
@@ -187,6 +185,12 @@ fn sign_vector(p: Precision, negate: &[bool]) -> String {
     format!("_mm256_setr_{}({})", p.sfx(), lanes.join(", "))
 }
 
+/// The immediate of a four-lane permutation taking lane `l` from lane `idx[l]`
+/// (`_mm256_permute_ps` within each half, `_mm256_permute4x64_pd`).
+fn imm4(idx: impl Iterator<Item = usize>) -> usize {
+    idx.enumerate().map(|(l, s)| s << (2 * l)).sum()
+}
+
 /// `v` with lane `l` taken from lane `idx[l]`, as an expression.
 fn permute(p: Precision, v: &str, idx: &[usize]) -> String {
     if idx.iter().enumerate().all(|(l, &s)| l == s) {
@@ -198,8 +202,7 @@ fn permute(p: Precision, v: &str, idx: &[usize]) -> String {
             format!("_mm256_permutevar8x32_ps({v}, _mm256_setr_epi32({}))", list.join(", "))
         }
         Precision::F64 => {
-            let imm: usize = idx.iter().enumerate().map(|(l, &s)| s << (2 * l)).sum();
-            format!("_mm256_permute4x64_pd::<{imm:#010b}>({v})")
+            format!("_mm256_permute4x64_pd::<{:#010b}>({v})", imm4(idx.iter().copied()))
         }
     }
 }
@@ -237,24 +240,18 @@ fn xor_permute(p: Precision, v: &str, h: &str, x: usize) -> String {
             if x == 0 {
                 return base.to_owned();
             }
-            let imm: usize = (0..4).map(|u| (u ^ x) << (2 * u)).sum();
-            format!("_mm256_permute_ps::<{imm:#010b}>({base})")
+            format!("_mm256_permute_ps::<{:#010b}>({base})", imm4((0..4).map(|u| u ^ x)))
         }
-        Precision::F64 => match x {
-            0 => v.to_owned(),
-            1 => format!("_mm256_permute_pd::<0b0101>({v})"),
-            _ => {
-                let imm: usize = (0..4).map(|u| (u ^ x) << (2 * u)).sum();
-                format!("_mm256_permute4x64_pd::<{imm:#010b}>({v})")
-            }
-        },
+        // Within pairs the cheaper in-lane permute; across pairs the general one.
+        Precision::F64 if x == 1 => format!("_mm256_permute_pd::<0b0101>({v})"),
+        Precision::F64 => permute(p, v, &(0..4).map(|u| u ^ x).collect::<Vec<_>>()),
     }
 }
 
 /// The AVX2 kernel of one precision.
 fn kernel(alg: &Resolved<'_>, p: Precision) -> String {
     let l = Layout::new(alg, p);
-    let (ty, sfx, w, n) = (p.ty(), p.sfx(), l.width, l.blade_at.len());
+    let (ty, sfx, w, n) = (p.ty(), p.sfx(), l.width, l.slot_at.len());
     let mut s = String::new();
     let groups = groups(&l);
     let terms: usize = groups.iter().map(|g| g.terms.len()).sum();
@@ -325,14 +322,17 @@ fn kernel(alg: &Resolved<'_>, p: Precision) -> String {
         writeln!(s, "    let c{b} = {sum};").expect("w");
     }
     // Back to storage order, with the relabelling signs.
-    let place = |slot: usize| l.slot_at.iter().position(|&x| x == slot).expect("a slot");
+    let mut place = vec![0; n];
+    for (k, &slot) in l.slot_at.iter().enumerate() {
+        place[slot] = k;
+    }
     let to: Vec<Vec<(usize, usize)>> = (0..l.blocks)
-        .map(|t| (0..w).map(|u| (place(t * w + u) / w, place(t * w + u) % w)).collect())
+        .map(|t| (0..w).map(|u| (place[t * w + u] / w, place[t * w + u] % w)).collect())
         .collect();
     gather(p, &mut s, "c", "o", &to);
     writeln!(s, "    let mut out = [0.0; {n}];").expect("w");
     for t in 0..l.blocks {
-        let negate: Vec<bool> = (0..w).map(|u| l.rel[place(t * w + u)] < 0.0).collect();
+        let negate: Vec<bool> = (0..w).map(|u| l.rel[place[t * w + u]] < 0.0).collect();
         let v = if negate.iter().any(|&x| x) {
             format!("_mm256_xor_{sfx}(o{t}, {})", sign_vector(p, &negate))
         } else {
