@@ -47,6 +47,7 @@ fn g3() -> AlgebraSpec {
         lanes: false,
         versors: &["Vector", "Bivector", "Rotor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Rotor"],
+        maps: &[],
     }
 }
 
@@ -120,6 +121,7 @@ fn pga() -> AlgebraSpec {
         lanes: true,
         versors: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
         sandwiched: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],
+        maps: &[],
     }
 }
 /// Conformal geometric algebra R(4,1), with `e4 = e+` (`e4² = 1`) and `e5 = e-` (`e5² = -1`),
@@ -188,6 +190,8 @@ fn cga() -> AlgebraSpec {
         lanes: true,
         versors: &["Vector", "Rotor", "Motor"],
         sandwiched: &["Vector", "Bivector", "Trivector", "Quadvector"],
+        // `Motor::transform_points`: a motor's map of vectors, worked out once.
+        maps: &[("Motor", "Vector")],
     }
 }
 

@@ -10,7 +10,10 @@
 //! and `B` of the table's terms, the result type the smallest declared type that holds every
 //! blade produced (preferring a type with no grade beyond those produced), and a pair whose
 //! table has no term gets no impl. The sandwich `v x ṽ` is the triple sum, its like terms
-//! collected, keeping the grades of `x`.
+//! collected, keeping the grades of `x`, or the two products `(v x) ṽ` where those take fewer
+//! operations (counted in the text written: versors with many coefficients, such as CGA's
+//! motor); pairs the table names also get the sandwich as a matrix, for one versor applied to
+//! many operands.
 //!
 //! Kernels use only `+`, `-`, `*`, negation and `T::ZERO`/`T::ONE`, in a fixed term order
 //! (the left operand's blades, then the right's), so that their rounding is reproducible.

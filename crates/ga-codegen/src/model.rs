@@ -38,6 +38,9 @@ pub struct AlgebraSpec {
     pub versors: &'static [&'static str],
     /// The types a versor may be applied to.
     pub sandwiched: &'static [&'static str],
+    /// `(versor, operand)` pairs whose sandwich is also written as a matrix, the method
+    /// `versor.{operand}_map()` (snake case): for applying one versor to many operands.
+    pub maps: &'static [(&'static str, &'static str)],
 }
 
 /// A type of an algebra: a named set of blades.

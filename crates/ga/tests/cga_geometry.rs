@@ -240,6 +240,24 @@ fn points_lie_exactly_on_lines_and_planes_through_them() {
 }
 
 #[test]
+fn the_closed_form_line_is_the_outer_product() {
+    // Exact on integer coordinates (every product and sum is), close on any vectors, points
+    // or not (the closed form does not assume weight 1).
+    let mut rng = Pcg64::seed_from_u64(0xC6A_0011);
+    for _ in 0..500 {
+        let (a, b) = (random_int_v3(&mut rng, 20), random_int_v3(&mut rng, 20));
+        let (p, q) = (up(a), up(b));
+        assert_eq!(Trivector::line(p, q), p ^ q ^ Vector::E_INF);
+        let g = |rng: &mut Pcg64| {
+            Vector::from_array(core::array::from_fn(|_| rng.random_range(-5.0..5.0)))
+        };
+        let (p, q) = (g(&mut rng), g(&mut rng));
+        let generic = (p ^ q ^ Vector::E_INF).to_array();
+        assert_close_slices(&Trivector::line(p, q).to_array(), &generic, 1e-12, "line");
+    }
+}
+
+#[test]
 fn a_line_meets_a_plane_at_the_textbook_intersection() {
     // Exact: the line through the origin and (1,1,1) meets z = 2 at (2,2,2), whether the plane
     // is spanned by three points, given dual, or met through the contraction.
@@ -250,6 +268,13 @@ fn a_line_meets_a_plane_at_the_textbook_intersection() {
     assert_eq!((line & plane).flat_point_position(), v3(2.0, 2.0, 2.0));
     assert_eq!((line & dual.undual()).flat_point_position(), v3(2.0, 2.0, 2.0));
     assert_eq!((dual | line).flat_point_position(), v3(2.0, 2.0, 2.0));
+    assert_eq!(line.meet_plane_position(dual), v3(2.0, 2.0, 2.0));
+    assert!(
+        !Trivector::line(up(V3::ZERO), up(v3(1.0, 1.0, 0.0)))
+            .meet_plane_position(dual)
+            .e1
+            .is_finite()
+    );
     // Parallel: the flat point has weight zero.
     let parallel = Trivector::line(up(V3::ZERO), up(v3(1.0, 1.0, 0.0)));
     assert_eq!((parallel & plane).e45, 0.0);
@@ -272,6 +297,7 @@ fn a_line_meets_a_plane_at_the_textbook_intersection() {
         let meet = line & dual.undual();
         assert_close(meet.flat_point_position(), expected, 1e-10, "line & plane");
         assert_close((dual | line).flat_point_position(), expected, 1e-10, "π ⌋ line");
+        assert_close(line.meet_plane_position(dual), expected, 1e-10, "meet_plane_position");
         // The meet is a flat point: up(x) ∧ e∞ up to scale.
         let unit = meet * (-1.0 / meet.e45);
         let flat = Bivector::flat_point(expected).to_array();
@@ -331,6 +357,49 @@ fn motors_move_points_like_glam_affine_maps() {
         let expected = v3(f64::from(z.x), f64::from(z.y), f64::from(z.z));
         assert_close(back, expected, 1e-13 * 2f64.powi(29) * (1.0 + 4.0 * m * m), "f32");
     }
+}
+
+#[test]
+fn transform_points_is_transform_point_for_every_even_versor() {
+    // Rigid motions, motions with a dilation, and the product of two sphere inversions (an
+    // even versor that moves e∞: the weight of an image depends on the point).
+    let mut rng = Pcg64::seed_from_u64(0xC6A_0012);
+    for case in 0..300 {
+        let m = random_scale(&mut rng);
+        let (axis, angle, t) =
+            (random_unit(&mut rng), rng.random_range(-PI..PI), random_v3(&mut rng, m));
+        let rigid = Motor::translator(t) * Motor::from(Rotor::from_axis_angle(axis, angle));
+        let motor = match case % 3 {
+            0 => rigid,
+            1 => Motor::dilator(rng.random_range(0.25..4.0)) * rigid,
+            _ => {
+                let s1 = Vector::dual_sphere(random_v3(&mut rng, m), m);
+                let s2 = Vector::dual_sphere(random_v3(&mut rng, m), 2.0 * m);
+                Motor::from_array((s1 * s2).to_array().map(|c| c / (m * m)))
+            }
+        };
+        let mut points: Vec<V3> = (0..9).map(|_| random_v3(&mut rng, m)).collect();
+        let expected: Vec<V3> = points.iter().map(|&x| motor.transform_point(x)).collect();
+        motor.transform_points(&mut points);
+        for (got, want) in points.iter().zip(&expected) {
+            let scale = want.norm().max(m);
+            assert_close(*got, *want, 1e-9 * scale, "transform_points");
+        }
+    }
+    // The map itself is the sandwich, on vectors that are not points too.
+    for _ in 0..300 {
+        let g = |rng: &mut Pcg64, n: usize| -> Vec<f64> {
+            (0..n).map(|_| rng.random_range(-2.0..2.0)).collect()
+        };
+        let motor = Motor::from_array(g(&mut rng, 16).try_into().expect("16"));
+        let x = Vector::from_array(g(&mut rng, 5).try_into().expect("5"));
+        let m = motor.vector_map();
+        let mapped: Vec<f64> =
+            m.iter().map(|row| row.iter().zip(x.to_array()).map(|(a, b)| a * b).sum()).collect();
+        assert_close_slices(&mapped, &motor.sandwich(x).to_array(), 1e-12, "vector_map");
+    }
+    let mut none: [V3; 0] = [];
+    Motor::<f64>::ONE.transform_points(&mut none);
 }
 
 #[test]

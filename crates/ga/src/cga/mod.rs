@@ -68,10 +68,12 @@
 //! (the dual sphere).
 //!
 //! These are the types and products, written by `ga-codegen` from its table (except
-//! `Multivector * Multivector`: sixteen G3 products on G3's SIMD kernel, in `geometric.rs`,
-//! checked against the generated expansion); geometry (round
-//! and flat objects, meets, reflections, rotors, translators, dilators, `exp` and `log`) is
-//! built on them by hand in [`geometry`], as methods of these types.
+//! `Multivector * Multivector`, in `geometric.rs`: the generated lane-by-lane AVX2 kernel, or
+//! sixteen G3 products where the build lacks AVX2, checked against the generated expansion),
+//! with the matrix of a motor's sandwich on vectors ([`Motor::vector_map`]); geometry (round
+//! and flat objects, meets, reflections, rotors, translators, dilators, `exp` and `log`, the
+//! closed-form line through two points and its meet with a plane, a motor applied to many
+//! points) is built on them by hand in [`geometry`], as methods of these types.
 //!
 //! # Cayley table of the geometric product
 //!

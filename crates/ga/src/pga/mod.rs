@@ -77,10 +77,10 @@
 //! a plane's normal, of a point's weight `w`).
 //!
 //! These are the types and products, written by `ga-codegen` from its table, except
-//! `Multivector * Multivector` and `Motor * Motor`, built on G3's SIMD kernels in `geometric.rs`
-//! (three G3 products; three quaternion products) and checked against the generated
-//! expansions. Built on them by hand: [`geometry`] (points from coordinates and back, planes
-//! from normals or three points, joins and meets, distances, angles, projections) and
+//! `Multivector * Multivector` and `Motor * Motor`, in `geometric.rs` (the generated
+//! lane-by-lane AVX2 kernel or three G3 products; three quaternion products), checked against
+//! the generated expansions. Built on them by hand: [`geometry`] (points from coordinates and
+//! back, planes from normals or three points, joins and meets, distances, angles, projections) and
 //! [`motor`] (rotors, translators and motors from axes, angles and translations, `exp` of a
 //! line and `log` of a motor in closed form, normalisation, the motor applied to each type,
 //! its matrix).

@@ -13,47 +13,23 @@ impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Vector<T>) -> Vector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e1_e4 = a.e1 * a.e4;
-        let e1_e5 = a.e1 * a.e5;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e2_e4 = a.e2 * a.e4;
-        let e2_e5 = a.e2 * a.e5;
-        let e3_e3 = a.e3 * a.e3;
-        let e3_e4 = a.e3 * a.e4;
-        let e3_e5 = a.e3 * a.e5;
-        let e4_e4 = a.e4 * a.e4;
-        let e4_e5 = a.e4 * a.e5;
-        let e5_e5 = a.e5 * a.e5;
+        let w_s = a.e1 * x.e1 + a.e2 * x.e2 + a.e3 * x.e3 + a.e4 * x.e4 - a.e5 * x.e5;
+        let w_e12 = a.e1 * x.e2 - a.e2 * x.e1;
+        let w_e13 = a.e1 * x.e3 - a.e3 * x.e1;
+        let w_e14 = a.e1 * x.e4 - a.e4 * x.e1;
+        let w_e15 = a.e1 * x.e5 - a.e5 * x.e1;
+        let w_e23 = a.e2 * x.e3 - a.e3 * x.e2;
+        let w_e24 = a.e2 * x.e4 - a.e4 * x.e2;
+        let w_e25 = a.e2 * x.e5 - a.e5 * x.e2;
+        let w_e34 = a.e3 * x.e4 - a.e4 * x.e3;
+        let w_e35 = a.e3 * x.e5 - a.e5 * x.e3;
+        let w_e45 = a.e4 * x.e5 - a.e5 * x.e4;
         Vector {
-            e1: (e1_e1 - e2_e2 - e3_e3 - e4_e4 + e5_e5) * x.e1
-                + (e1_e2 + e1_e2) * x.e2
-                + (e1_e3 + e1_e3) * x.e3
-                + (e1_e4 + e1_e4) * x.e4
-                + (-(e1_e5 + e1_e5)) * x.e5,
-            e2: (e1_e2 + e1_e2) * x.e1
-                + (e2_e2 - e1_e1 - e3_e3 - e4_e4 + e5_e5) * x.e2
-                + (e2_e3 + e2_e3) * x.e3
-                + (e2_e4 + e2_e4) * x.e4
-                + (-(e2_e5 + e2_e5)) * x.e5,
-            e3: (e1_e3 + e1_e3) * x.e1
-                + (e2_e3 + e2_e3) * x.e2
-                + (e3_e3 - e1_e1 - e2_e2 - e4_e4 + e5_e5) * x.e3
-                + (e3_e4 + e3_e4) * x.e4
-                + (-(e3_e5 + e3_e5)) * x.e5,
-            e4: (e1_e4 + e1_e4) * x.e1
-                + (e2_e4 + e2_e4) * x.e2
-                + (e3_e4 + e3_e4) * x.e3
-                + (e4_e4 - e1_e1 - e2_e2 - e3_e3 + e5_e5) * x.e4
-                + (-(e4_e5 + e4_e5)) * x.e5,
-            e5: (e1_e5 + e1_e5) * x.e1
-                + (e2_e5 + e2_e5) * x.e2
-                + (e3_e5 + e3_e5) * x.e3
-                + (e4_e5 + e4_e5) * x.e4
-                + (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e5_e5) * x.e5,
+            e1: w_s * a.e1 + w_e12 * a.e2 + w_e13 * a.e3 + w_e14 * a.e4 - w_e15 * a.e5,
+            e2: w_s * a.e2 - w_e12 * a.e1 + w_e23 * a.e3 + w_e24 * a.e4 - w_e25 * a.e5,
+            e3: w_s * a.e3 - w_e13 * a.e1 - w_e23 * a.e2 + w_e34 * a.e4 - w_e35 * a.e5,
+            e4: w_s * a.e4 - w_e14 * a.e1 - w_e24 * a.e2 - w_e34 * a.e3 - w_e45 * a.e5,
+            e5: w_s * a.e5 - w_e15 * a.e1 - w_e25 * a.e2 - w_e35 * a.e3 - w_e45 * a.e4,
         }
     }
 }
@@ -64,92 +40,32 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e1_e4 = a.e1 * a.e4;
-        let e1_e5 = a.e1 * a.e5;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e2_e4 = a.e2 * a.e4;
-        let e2_e5 = a.e2 * a.e5;
-        let e3_e3 = a.e3 * a.e3;
-        let e3_e4 = a.e3 * a.e4;
-        let e3_e5 = a.e3 * a.e5;
-        let e4_e4 = a.e4 * a.e4;
-        let e4_e5 = a.e4 * a.e5;
-        let e5_e5 = a.e5 * a.e5;
+        let w_e1 = a.e5 * x.e15 - a.e2 * x.e12 - a.e3 * x.e13 - a.e4 * x.e14;
+        let w_e2 = a.e1 * x.e12 - a.e3 * x.e23 - a.e4 * x.e24 + a.e5 * x.e25;
+        let w_e3 = a.e1 * x.e13 + a.e2 * x.e23 - a.e4 * x.e34 + a.e5 * x.e35;
+        let w_e4 = a.e1 * x.e14 + a.e2 * x.e24 + a.e3 * x.e34 + a.e5 * x.e45;
+        let w_e5 = a.e1 * x.e15 + a.e2 * x.e25 + a.e3 * x.e35 + a.e4 * x.e45;
+        let w_e123 = a.e1 * x.e23 - a.e2 * x.e13 + a.e3 * x.e12;
+        let w_e124 = a.e1 * x.e24 - a.e2 * x.e14 + a.e4 * x.e12;
+        let w_e125 = a.e1 * x.e25 - a.e2 * x.e15 + a.e5 * x.e12;
+        let w_e134 = a.e1 * x.e34 - a.e3 * x.e14 + a.e4 * x.e13;
+        let w_e135 = a.e1 * x.e35 - a.e3 * x.e15 + a.e5 * x.e13;
+        let w_e145 = a.e1 * x.e45 - a.e4 * x.e15 + a.e5 * x.e14;
+        let w_e234 = a.e2 * x.e34 - a.e3 * x.e24 + a.e4 * x.e23;
+        let w_e235 = a.e2 * x.e35 - a.e3 * x.e25 + a.e5 * x.e23;
+        let w_e245 = a.e2 * x.e45 - a.e4 * x.e25 + a.e5 * x.e24;
+        let w_e345 = a.e3 * x.e45 - a.e4 * x.e35 + a.e5 * x.e34;
         Bivector {
-            e12: (e3_e3 - e1_e1 - e2_e2 + e4_e4 - e5_e5) * x.e12
-                + (-(e2_e3 + e2_e3)) * x.e13
-                + (-(e2_e4 + e2_e4)) * x.e14
-                + (e2_e5 + e2_e5) * x.e15
-                + (e1_e3 + e1_e3) * x.e23
-                + (e1_e4 + e1_e4) * x.e24
-                + (-(e1_e5 + e1_e5)) * x.e25,
-            e13: (-(e2_e3 + e2_e3)) * x.e12
-                + (e2_e2 - e1_e1 - e3_e3 + e4_e4 - e5_e5) * x.e13
-                + (-(e3_e4 + e3_e4)) * x.e14
-                + (e3_e5 + e3_e5) * x.e15
-                + (-(e1_e2 + e1_e2)) * x.e23
-                + (e1_e4 + e1_e4) * x.e34
-                + (-(e1_e5 + e1_e5)) * x.e35,
-            e14: (-(e2_e4 + e2_e4)) * x.e12
-                + (-(e3_e4 + e3_e4)) * x.e13
-                + (e2_e2 - e1_e1 + e3_e3 - e4_e4 - e5_e5) * x.e14
-                + (e4_e5 + e4_e5) * x.e15
-                + (-(e1_e2 + e1_e2)) * x.e24
-                + (-(e1_e3 + e1_e3)) * x.e34
-                + (-(e1_e5 + e1_e5)) * x.e45,
-            e15: (-(e2_e5 + e2_e5)) * x.e12
-                + (-(e3_e5 + e3_e5)) * x.e13
-                + (-(e4_e5 + e4_e5)) * x.e14
-                + (e2_e2 - e1_e1 + e3_e3 + e4_e4 + e5_e5) * x.e15
-                + (-(e1_e2 + e1_e2)) * x.e25
-                + (-(e1_e3 + e1_e3)) * x.e35
-                + (-(e1_e4 + e1_e4)) * x.e45,
-            e23: (e1_e3 + e1_e3) * x.e12
-                + (-(e1_e2 + e1_e2)) * x.e13
-                + (e1_e1 - e2_e2 - e3_e3 + e4_e4 - e5_e5) * x.e23
-                + (-(e3_e4 + e3_e4)) * x.e24
-                + (e3_e5 + e3_e5) * x.e25
-                + (e2_e4 + e2_e4) * x.e34
-                + (-(e2_e5 + e2_e5)) * x.e35,
-            e24: (e1_e4 + e1_e4) * x.e12
-                + (-(e1_e2 + e1_e2)) * x.e14
-                + (-(e3_e4 + e3_e4)) * x.e23
-                + (e1_e1 - e2_e2 + e3_e3 - e4_e4 - e5_e5) * x.e24
-                + (e4_e5 + e4_e5) * x.e25
-                + (-(e2_e3 + e2_e3)) * x.e34
-                + (-(e2_e5 + e2_e5)) * x.e45,
-            e25: (e1_e5 + e1_e5) * x.e12
-                + (-(e1_e2 + e1_e2)) * x.e15
-                + (-(e3_e5 + e3_e5)) * x.e23
-                + (-(e4_e5 + e4_e5)) * x.e24
-                + (e1_e1 - e2_e2 + e3_e3 + e4_e4 + e5_e5) * x.e25
-                + (-(e2_e3 + e2_e3)) * x.e35
-                + (-(e2_e4 + e2_e4)) * x.e45,
-            e34: (e1_e4 + e1_e4) * x.e13
-                + (-(e1_e3 + e1_e3)) * x.e14
-                + (e2_e4 + e2_e4) * x.e23
-                + (-(e2_e3 + e2_e3)) * x.e24
-                + (e1_e1 + e2_e2 - e3_e3 - e4_e4 - e5_e5) * x.e34
-                + (e4_e5 + e4_e5) * x.e35
-                + (-(e3_e5 + e3_e5)) * x.e45,
-            e35: (e1_e5 + e1_e5) * x.e13
-                + (-(e1_e3 + e1_e3)) * x.e15
-                + (e2_e5 + e2_e5) * x.e23
-                + (-(e2_e3 + e2_e3)) * x.e25
-                + (-(e4_e5 + e4_e5)) * x.e34
-                + (e1_e1 + e2_e2 - e3_e3 + e4_e4 + e5_e5) * x.e35
-                + (-(e3_e4 + e3_e4)) * x.e45,
-            e45: (e1_e5 + e1_e5) * x.e14
-                + (-(e1_e4 + e1_e4)) * x.e15
-                + (e2_e5 + e2_e5) * x.e24
-                + (-(e2_e4 + e2_e4)) * x.e25
-                + (e3_e5 + e3_e5) * x.e34
-                + (-(e3_e4 + e3_e4)) * x.e35
-                + (e1_e1 + e2_e2 + e3_e3 - e4_e4 + e5_e5) * x.e45,
+            e12: w_e1 * a.e2 - w_e2 * a.e1 + w_e123 * a.e3 + w_e124 * a.e4 - w_e125 * a.e5,
+            e13: w_e1 * a.e3 - w_e3 * a.e1 - w_e123 * a.e2 + w_e134 * a.e4 - w_e135 * a.e5,
+            e14: w_e1 * a.e4 - w_e4 * a.e1 - w_e124 * a.e2 - w_e134 * a.e3 - w_e145 * a.e5,
+            e15: w_e1 * a.e5 - w_e5 * a.e1 - w_e125 * a.e2 - w_e135 * a.e3 - w_e145 * a.e4,
+            e23: w_e2 * a.e3 - w_e3 * a.e2 + w_e123 * a.e1 + w_e234 * a.e4 - w_e235 * a.e5,
+            e24: w_e2 * a.e4 - w_e4 * a.e2 + w_e124 * a.e1 - w_e234 * a.e3 - w_e245 * a.e5,
+            e25: w_e2 * a.e5 - w_e5 * a.e2 + w_e125 * a.e1 - w_e235 * a.e3 - w_e245 * a.e4,
+            e34: w_e3 * a.e4 - w_e4 * a.e3 + w_e134 * a.e1 + w_e234 * a.e2 - w_e345 * a.e5,
+            e35: w_e3 * a.e5 - w_e5 * a.e3 + w_e135 * a.e1 + w_e235 * a.e2 - w_e345 * a.e4,
+            e45: w_e4 * a.e5 - w_e5 * a.e4 + w_e145 * a.e1 + w_e245 * a.e2 + w_e345 * a.e3,
         }
     }
 }
@@ -160,92 +76,32 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Trivector<T>) -> Trivector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e1_e4 = a.e1 * a.e4;
-        let e1_e5 = a.e1 * a.e5;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e2_e4 = a.e2 * a.e4;
-        let e2_e5 = a.e2 * a.e5;
-        let e3_e3 = a.e3 * a.e3;
-        let e3_e4 = a.e3 * a.e4;
-        let e3_e5 = a.e3 * a.e5;
-        let e4_e4 = a.e4 * a.e4;
-        let e4_e5 = a.e4 * a.e5;
-        let e5_e5 = a.e5 * a.e5;
+        let w_e12 = a.e3 * x.e123 + a.e4 * x.e124 - a.e5 * x.e125;
+        let w_e13 = a.e4 * x.e134 - a.e2 * x.e123 - a.e5 * x.e135;
+        let w_e14 = -a.e2 * x.e124 - a.e3 * x.e134 - a.e5 * x.e145;
+        let w_e15 = -a.e2 * x.e125 - a.e3 * x.e135 - a.e4 * x.e145;
+        let w_e23 = a.e1 * x.e123 + a.e4 * x.e234 - a.e5 * x.e235;
+        let w_e24 = a.e1 * x.e124 - a.e3 * x.e234 - a.e5 * x.e245;
+        let w_e25 = a.e1 * x.e125 - a.e3 * x.e235 - a.e4 * x.e245;
+        let w_e34 = a.e1 * x.e134 + a.e2 * x.e234 - a.e5 * x.e345;
+        let w_e35 = a.e1 * x.e135 + a.e2 * x.e235 - a.e4 * x.e345;
+        let w_e45 = a.e1 * x.e145 + a.e2 * x.e245 + a.e3 * x.e345;
+        let w_e1234 = a.e1 * x.e234 - a.e2 * x.e134 + a.e3 * x.e124 - a.e4 * x.e123;
+        let w_e1235 = a.e1 * x.e235 - a.e2 * x.e135 + a.e3 * x.e125 - a.e5 * x.e123;
+        let w_e1245 = a.e1 * x.e245 - a.e2 * x.e145 + a.e4 * x.e125 - a.e5 * x.e124;
+        let w_e1345 = a.e1 * x.e345 - a.e3 * x.e145 + a.e4 * x.e135 - a.e5 * x.e134;
+        let w_e2345 = a.e2 * x.e345 - a.e3 * x.e245 + a.e4 * x.e235 - a.e5 * x.e234;
         Trivector {
-            e123: (e1_e1 + e2_e2 + e3_e3 - e4_e4 + e5_e5) * x.e123
-                + (e3_e4 + e3_e4) * x.e124
-                + (-(e3_e5 + e3_e5)) * x.e125
-                + (-(e2_e4 + e2_e4)) * x.e134
-                + (e2_e5 + e2_e5) * x.e135
-                + (e1_e4 + e1_e4) * x.e234
-                + (-(e1_e5 + e1_e5)) * x.e235,
-            e124: (e3_e4 + e3_e4) * x.e123
-                + (e1_e1 + e2_e2 - e3_e3 + e4_e4 + e5_e5) * x.e124
-                + (-(e4_e5 + e4_e5)) * x.e125
-                + (e2_e3 + e2_e3) * x.e134
-                + (e2_e5 + e2_e5) * x.e145
-                + (-(e1_e3 + e1_e3)) * x.e234
-                + (-(e1_e5 + e1_e5)) * x.e245,
-            e125: (e3_e5 + e3_e5) * x.e123
-                + (e4_e5 + e4_e5) * x.e124
-                + (e1_e1 + e2_e2 - e3_e3 - e4_e4 - e5_e5) * x.e125
-                + (e2_e3 + e2_e3) * x.e135
-                + (e2_e4 + e2_e4) * x.e145
-                + (-(e1_e3 + e1_e3)) * x.e235
-                + (-(e1_e4 + e1_e4)) * x.e245,
-            e134: (-(e2_e4 + e2_e4)) * x.e123
-                + (e2_e3 + e2_e3) * x.e124
-                + (e1_e1 - e2_e2 + e3_e3 + e4_e4 + e5_e5) * x.e134
-                + (-(e4_e5 + e4_e5)) * x.e135
-                + (e3_e5 + e3_e5) * x.e145
-                + (e1_e2 + e1_e2) * x.e234
-                + (-(e1_e5 + e1_e5)) * x.e345,
-            e135: (-(e2_e5 + e2_e5)) * x.e123
-                + (e2_e3 + e2_e3) * x.e125
-                + (e4_e5 + e4_e5) * x.e134
-                + (e1_e1 - e2_e2 + e3_e3 - e4_e4 - e5_e5) * x.e135
-                + (e3_e4 + e3_e4) * x.e145
-                + (e1_e2 + e1_e2) * x.e235
-                + (-(e1_e4 + e1_e4)) * x.e345,
-            e145: (-(e2_e5 + e2_e5)) * x.e124
-                + (e2_e4 + e2_e4) * x.e125
-                + (-(e3_e5 + e3_e5)) * x.e134
-                + (e3_e4 + e3_e4) * x.e135
-                + (e1_e1 - e2_e2 - e3_e3 + e4_e4 - e5_e5) * x.e145
-                + (e1_e2 + e1_e2) * x.e245
-                + (e1_e3 + e1_e3) * x.e345,
-            e234: (e1_e4 + e1_e4) * x.e123
-                + (-(e1_e3 + e1_e3)) * x.e124
-                + (e1_e2 + e1_e2) * x.e134
-                + (e2_e2 - e1_e1 + e3_e3 + e4_e4 + e5_e5) * x.e234
-                + (-(e4_e5 + e4_e5)) * x.e235
-                + (e3_e5 + e3_e5) * x.e245
-                + (-(e2_e5 + e2_e5)) * x.e345,
-            e235: (e1_e5 + e1_e5) * x.e123
-                + (-(e1_e3 + e1_e3)) * x.e125
-                + (e1_e2 + e1_e2) * x.e135
-                + (e4_e5 + e4_e5) * x.e234
-                + (e2_e2 - e1_e1 + e3_e3 - e4_e4 - e5_e5) * x.e235
-                + (e3_e4 + e3_e4) * x.e245
-                + (-(e2_e4 + e2_e4)) * x.e345,
-            e245: (e1_e5 + e1_e5) * x.e124
-                + (-(e1_e4 + e1_e4)) * x.e125
-                + (e1_e2 + e1_e2) * x.e145
-                + (-(e3_e5 + e3_e5)) * x.e234
-                + (e3_e4 + e3_e4) * x.e235
-                + (e2_e2 - e1_e1 - e3_e3 + e4_e4 - e5_e5) * x.e245
-                + (e2_e3 + e2_e3) * x.e345,
-            e345: (e1_e5 + e1_e5) * x.e134
-                + (-(e1_e4 + e1_e4)) * x.e135
-                + (e1_e3 + e1_e3) * x.e145
-                + (e2_e5 + e2_e5) * x.e234
-                + (-(e2_e4 + e2_e4)) * x.e235
-                + (e2_e3 + e2_e3) * x.e245
-                + (e3_e3 - e1_e1 - e2_e2 + e4_e4 - e5_e5) * x.e345,
+            e123: w_e12 * a.e3 - w_e13 * a.e2 + w_e23 * a.e1 + w_e1234 * a.e4 - w_e1235 * a.e5,
+            e124: w_e12 * a.e4 - w_e14 * a.e2 + w_e24 * a.e1 - w_e1234 * a.e3 - w_e1245 * a.e5,
+            e125: w_e12 * a.e5 - w_e15 * a.e2 + w_e25 * a.e1 - w_e1235 * a.e3 - w_e1245 * a.e4,
+            e134: w_e13 * a.e4 - w_e14 * a.e3 + w_e34 * a.e1 + w_e1234 * a.e2 - w_e1345 * a.e5,
+            e135: w_e13 * a.e5 - w_e15 * a.e3 + w_e35 * a.e1 + w_e1235 * a.e2 - w_e1345 * a.e4,
+            e145: w_e14 * a.e5 - w_e15 * a.e4 + w_e45 * a.e1 + w_e1245 * a.e2 + w_e1345 * a.e3,
+            e234: w_e23 * a.e4 - w_e24 * a.e3 + w_e34 * a.e2 - w_e1234 * a.e1 - w_e2345 * a.e5,
+            e235: w_e23 * a.e5 - w_e25 * a.e3 + w_e35 * a.e2 - w_e1235 * a.e1 - w_e2345 * a.e4,
+            e245: w_e24 * a.e5 - w_e25 * a.e4 + w_e45 * a.e2 - w_e1245 * a.e1 + w_e2345 * a.e3,
+            e345: w_e34 * a.e5 - w_e35 * a.e4 + w_e45 * a.e3 - w_e1345 * a.e1 - w_e2345 * a.e2,
         }
     }
 }
@@ -256,47 +112,24 @@ impl<T: Scalar> Sandwich<Quadvector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Quadvector<T>) -> Quadvector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e1_e4 = a.e1 * a.e4;
-        let e1_e5 = a.e1 * a.e5;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e2_e4 = a.e2 * a.e4;
-        let e2_e5 = a.e2 * a.e5;
-        let e3_e3 = a.e3 * a.e3;
-        let e3_e4 = a.e3 * a.e4;
-        let e3_e5 = a.e3 * a.e5;
-        let e4_e4 = a.e4 * a.e4;
-        let e4_e5 = a.e4 * a.e5;
-        let e5_e5 = a.e5 * a.e5;
+        let w_e123 = a.e5 * x.e1235 - a.e4 * x.e1234;
+        let w_e124 = a.e3 * x.e1234 + a.e5 * x.e1245;
+        let w_e125 = a.e3 * x.e1235 + a.e4 * x.e1245;
+        let w_e134 = a.e5 * x.e1345 - a.e2 * x.e1234;
+        let w_e135 = a.e4 * x.e1345 - a.e2 * x.e1235;
+        let w_e145 = -a.e2 * x.e1245 - a.e3 * x.e1345;
+        let w_e234 = a.e1 * x.e1234 + a.e5 * x.e2345;
+        let w_e235 = a.e1 * x.e1235 + a.e4 * x.e2345;
+        let w_e245 = a.e1 * x.e1245 - a.e3 * x.e2345;
+        let w_e345 = a.e1 * x.e1345 + a.e2 * x.e2345;
+        let w_e12345 =
+            a.e1 * x.e2345 - a.e2 * x.e1345 + a.e3 * x.e1245 - a.e4 * x.e1235 + a.e5 * x.e1234;
         Quadvector {
-            e1234: (-e1_e1 - e2_e2 - e3_e3 - e4_e4 - e5_e5) * x.e1234
-                + (e4_e5 + e4_e5) * x.e1235
-                + (-(e3_e5 + e3_e5)) * x.e1245
-                + (e2_e5 + e2_e5) * x.e1345
-                + (-(e1_e5 + e1_e5)) * x.e2345,
-            e1235: (-(e4_e5 + e4_e5)) * x.e1234
-                + (e4_e4 - e1_e1 - e2_e2 - e3_e3 + e5_e5) * x.e1235
-                + (-(e3_e4 + e3_e4)) * x.e1245
-                + (e2_e4 + e2_e4) * x.e1345
-                + (-(e1_e4 + e1_e4)) * x.e2345,
-            e1245: (e3_e5 + e3_e5) * x.e1234
-                + (-(e3_e4 + e3_e4)) * x.e1235
-                + (e3_e3 - e1_e1 - e2_e2 - e4_e4 + e5_e5) * x.e1245
-                + (-(e2_e3 + e2_e3)) * x.e1345
-                + (e1_e3 + e1_e3) * x.e2345,
-            e1345: (-(e2_e5 + e2_e5)) * x.e1234
-                + (e2_e4 + e2_e4) * x.e1235
-                + (-(e2_e3 + e2_e3)) * x.e1245
-                + (e2_e2 - e1_e1 - e3_e3 - e4_e4 + e5_e5) * x.e1345
-                + (-(e1_e2 + e1_e2)) * x.e2345,
-            e2345: (e1_e5 + e1_e5) * x.e1234
-                + (-(e1_e4 + e1_e4)) * x.e1235
-                + (e1_e3 + e1_e3) * x.e1245
-                + (-(e1_e2 + e1_e2)) * x.e1345
-                + (e1_e1 - e2_e2 - e3_e3 - e4_e4 + e5_e5) * x.e2345,
+            e1234: w_e123 * a.e4 - w_e124 * a.e3 + w_e134 * a.e2 - w_e234 * a.e1 - w_e12345 * a.e5,
+            e1235: w_e123 * a.e5 - w_e125 * a.e3 + w_e135 * a.e2 - w_e235 * a.e1 - w_e12345 * a.e4,
+            e1245: w_e124 * a.e5 - w_e125 * a.e4 + w_e145 * a.e2 - w_e245 * a.e1 + w_e12345 * a.e3,
+            e1345: w_e134 * a.e5 - w_e135 * a.e4 + w_e145 * a.e3 - w_e345 * a.e1 - w_e12345 * a.e2,
+            e2345: w_e234 * a.e5 - w_e235 * a.e4 + w_e245 * a.e3 - w_e345 * a.e2 + w_e12345 * a.e1,
         }
     }
 }
@@ -339,45 +172,33 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e13 = a.s * a.e13;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e13 = a.e12 * a.e13;
-        let e12_e23 = a.e12 * a.e23;
-        let e13_e13 = a.e13 * a.e13;
-        let e13_e23 = a.e13 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_s = -a.e12 * x.e12 - a.e13 * x.e13 - a.e23 * x.e23;
+        let w_e12 = a.s * x.e12 - a.e13 * x.e23 + a.e23 * x.e13;
+        let w_e13 = a.s * x.e13 + a.e12 * x.e23 - a.e23 * x.e12;
+        let w_e14 = a.s * x.e14 + a.e12 * x.e24 + a.e13 * x.e34;
+        let w_e15 = a.s * x.e15 + a.e12 * x.e25 + a.e13 * x.e35;
+        let w_e23 = a.s * x.e23 - a.e12 * x.e13 + a.e13 * x.e12;
+        let w_e24 = a.s * x.e24 - a.e12 * x.e14 + a.e23 * x.e34;
+        let w_e25 = a.s * x.e25 - a.e12 * x.e15 + a.e23 * x.e35;
+        let w_e34 = a.s * x.e34 - a.e13 * x.e14 - a.e23 * x.e24;
+        let w_e35 = a.s * x.e35 - a.e13 * x.e15 - a.e23 * x.e25;
+        let w_e45 = a.s * x.e45;
+        let w_e1234 = a.e12 * x.e34 - a.e13 * x.e24 + a.e23 * x.e14;
+        let w_e1235 = a.e12 * x.e35 - a.e13 * x.e25 + a.e23 * x.e15;
+        let w_e1245 = a.e12 * x.e45;
+        let w_e1345 = a.e13 * x.e45;
+        let w_e2345 = a.e23 * x.e45;
         Bivector {
-            e12: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e12
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13)) * x.e13
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e23,
-            e13: ((e12_e13 + e12_e13) - (s_e23 + s_e23)) * x.e12
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e13
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23)) * x.e23,
-            e14: (s_s - e12_e12 - e13_e13 + e23_e23) * x.e14
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e24
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e34,
-            e15: (s_s - e12_e12 - e13_e13 + e23_e23) * x.e15
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e25
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e35,
-            e23: ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e12
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12)) * x.e13
-                + (s_s - e12_e12 - e13_e13 + e23_e23) * x.e23,
-            e24: (-(s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e14
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e24
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e34,
-            e25: (-(s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e15
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e25
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e35,
-            e34: ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e14
-                + (-(s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e24
-                + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e34,
-            e35: ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e15
-                + (-(s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e25
-                + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e35,
-            e45: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e45,
+            e12: w_e12 * a.s - w_s * a.e12 + w_e13 * a.e23 - w_e23 * a.e13,
+            e13: w_e13 * a.s - w_s * a.e13 - w_e12 * a.e23 + w_e23 * a.e12,
+            e14: w_e14 * a.s + w_e24 * a.e12 + w_e34 * a.e13 + w_e1234 * a.e23,
+            e15: w_e15 * a.s + w_e25 * a.e12 + w_e35 * a.e13 + w_e1235 * a.e23,
+            e23: w_e12 * a.e13 - w_s * a.e23 - w_e13 * a.e12 + w_e23 * a.s,
+            e24: w_e24 * a.s - w_e14 * a.e12 + w_e34 * a.e23 - w_e1234 * a.e13,
+            e25: w_e25 * a.s - w_e15 * a.e12 + w_e35 * a.e23 - w_e1235 * a.e13,
+            e34: w_e34 * a.s - w_e14 * a.e13 - w_e24 * a.e23 + w_e1234 * a.e12,
+            e35: w_e35 * a.s - w_e15 * a.e13 - w_e25 * a.e23 + w_e1235 * a.e12,
+            e45: w_e45 * a.s + w_e1245 * a.e12 + w_e1345 * a.e13 + w_e2345 * a.e23,
         }
     }
 }
@@ -388,45 +209,33 @@ impl<T: Scalar> Sandwich<Trivector<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Trivector<T>) -> Trivector<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e13 = a.s * a.e13;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e13 = a.e12 * a.e13;
-        let e12_e23 = a.e12 * a.e23;
-        let e13_e13 = a.e13 * a.e13;
-        let e13_e23 = a.e13 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_e1 = -a.e23 * x.e123;
+        let w_e2 = a.e13 * x.e123;
+        let w_e3 = -a.e12 * x.e123;
+        let w_e4 = -a.e12 * x.e124 - a.e13 * x.e134 - a.e23 * x.e234;
+        let w_e5 = -a.e12 * x.e125 - a.e13 * x.e135 - a.e23 * x.e235;
+        let w_e123 = a.s * x.e123;
+        let w_e124 = a.s * x.e124 - a.e13 * x.e234 + a.e23 * x.e134;
+        let w_e125 = a.s * x.e125 - a.e13 * x.e235 + a.e23 * x.e135;
+        let w_e134 = a.s * x.e134 + a.e12 * x.e234 - a.e23 * x.e124;
+        let w_e135 = a.s * x.e135 + a.e12 * x.e235 - a.e23 * x.e125;
+        let w_e145 = a.s * x.e145 + a.e12 * x.e245 + a.e13 * x.e345;
+        let w_e234 = a.s * x.e234 - a.e12 * x.e134 + a.e13 * x.e124;
+        let w_e235 = a.s * x.e235 - a.e12 * x.e135 + a.e13 * x.e125;
+        let w_e245 = a.s * x.e245 - a.e12 * x.e145 + a.e23 * x.e345;
+        let w_e345 = a.s * x.e345 - a.e13 * x.e145 - a.e23 * x.e245;
+        let w_e12345 = a.e12 * x.e345 - a.e13 * x.e245 + a.e23 * x.e145;
         Trivector {
-            e123: (s_s + e12_e12 + e13_e13 + e23_e23) * x.e123,
-            e124: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e124
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13)) * x.e134
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e234,
-            e125: (s_s + e12_e12 - e13_e13 - e23_e23) * x.e125
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13)) * x.e135
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e235,
-            e134: ((e12_e13 + e12_e13) - (s_e23 + s_e23)) * x.e124
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e134
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23)) * x.e234,
-            e135: ((e12_e13 + e12_e13) - (s_e23 + s_e23)) * x.e125
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e135
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23)) * x.e235,
-            e145: (s_s - e12_e12 - e13_e13 + e23_e23) * x.e145
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e245
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e345,
-            e234: ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e124
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12)) * x.e134
-                + (s_s - e12_e12 - e13_e13 + e23_e23) * x.e234,
-            e235: ((s_e13 + s_e13) + (e12_e23 + e12_e23)) * x.e125
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12)) * x.e135
-                + (s_s - e12_e12 - e13_e13 + e23_e23) * x.e235,
-            e245: (-(s_e12 + s_e12) - (e13_e23 + e13_e23)) * x.e145
-                + (s_s - e12_e12 + e13_e13 - e23_e23) * x.e245
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e345,
-            e345: ((e12_e23 + e12_e23) - (s_e13 + s_e13)) * x.e145
-                + (-(s_e23 + s_e23) - (e12_e13 + e12_e13)) * x.e245
-                + (s_s + e12_e12 - e13_e13 - e23_e23) * x.e345,
+            e123: w_e2 * a.e13 - w_e1 * a.e23 - w_e3 * a.e12 + w_e123 * a.s,
+            e124: w_e124 * a.s - w_e4 * a.e12 + w_e134 * a.e23 - w_e234 * a.e13,
+            e125: w_e125 * a.s - w_e5 * a.e12 + w_e135 * a.e23 - w_e235 * a.e13,
+            e134: w_e134 * a.s - w_e4 * a.e13 - w_e124 * a.e23 + w_e234 * a.e12,
+            e135: w_e135 * a.s - w_e5 * a.e13 - w_e125 * a.e23 + w_e235 * a.e12,
+            e145: w_e145 * a.s + w_e245 * a.e12 + w_e345 * a.e13 + w_e12345 * a.e23,
+            e234: w_e124 * a.e13 - w_e4 * a.e23 - w_e134 * a.e12 + w_e234 * a.s,
+            e235: w_e125 * a.e13 - w_e5 * a.e23 - w_e135 * a.e12 + w_e235 * a.s,
+            e245: w_e245 * a.s - w_e145 * a.e12 + w_e345 * a.e23 - w_e12345 * a.e13,
+            e345: w_e345 * a.s - w_e145 * a.e13 - w_e245 * a.e23 + w_e12345 * a.e12,
         }
     }
 }
@@ -469,6 +278,735 @@ impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Vector<T>) -> Vector<T> {
         let a = self;
+        let w_e1 = a.s * x.e1 + a.e12 * x.e2 + a.e13 * x.e3 + a.e14 * x.e4 - a.e15 * x.e5;
+        let w_e2 = a.s * x.e2 - a.e12 * x.e1 + a.e23 * x.e3 + a.e24 * x.e4 - a.e25 * x.e5;
+        let w_e3 = a.s * x.e3 - a.e13 * x.e1 - a.e23 * x.e2 + a.e34 * x.e4 - a.e35 * x.e5;
+        let w_e4 = a.s * x.e4 - a.e14 * x.e1 - a.e24 * x.e2 - a.e34 * x.e3 - a.e45 * x.e5;
+        let w_e5 = a.s * x.e5 - a.e15 * x.e1 - a.e25 * x.e2 - a.e35 * x.e3 - a.e45 * x.e4;
+        let w_e123 = a.e12 * x.e3 - a.e13 * x.e2 + a.e23 * x.e1 + a.e1234 * x.e4 - a.e1235 * x.e5;
+        let w_e124 = a.e12 * x.e4 - a.e14 * x.e2 + a.e24 * x.e1 - a.e1234 * x.e3 - a.e1245 * x.e5;
+        let w_e125 = a.e12 * x.e5 - a.e15 * x.e2 + a.e25 * x.e1 - a.e1235 * x.e3 - a.e1245 * x.e4;
+        let w_e134 = a.e13 * x.e4 - a.e14 * x.e3 + a.e34 * x.e1 + a.e1234 * x.e2 - a.e1345 * x.e5;
+        let w_e135 = a.e13 * x.e5 - a.e15 * x.e3 + a.e35 * x.e1 + a.e1235 * x.e2 - a.e1345 * x.e4;
+        let w_e145 = a.e14 * x.e5 - a.e15 * x.e4 + a.e45 * x.e1 + a.e1245 * x.e2 + a.e1345 * x.e3;
+        let w_e234 = a.e23 * x.e4 - a.e24 * x.e3 + a.e34 * x.e2 - a.e1234 * x.e1 - a.e2345 * x.e5;
+        let w_e235 = a.e23 * x.e5 - a.e25 * x.e3 + a.e35 * x.e2 - a.e1235 * x.e1 - a.e2345 * x.e4;
+        let w_e245 = a.e24 * x.e5 - a.e25 * x.e4 + a.e45 * x.e2 - a.e1245 * x.e1 + a.e2345 * x.e3;
+        let w_e345 = a.e34 * x.e5 - a.e35 * x.e4 + a.e45 * x.e3 - a.e1345 * x.e1 - a.e2345 * x.e2;
+        let w_e12345 =
+            a.e1234 * x.e5 - a.e1235 * x.e4 + a.e1245 * x.e3 - a.e1345 * x.e2 + a.e2345 * x.e1;
+        Vector {
+            e1: w_e1 * a.s + w_e2 * a.e12 + w_e3 * a.e13 + w_e4 * a.e14 - w_e5 * a.e15
+                + w_e123 * a.e23
+                + w_e124 * a.e24
+                - w_e125 * a.e25
+                + w_e134 * a.e34
+                - w_e135 * a.e35
+                - w_e145 * a.e45
+                + w_e234 * a.e1234
+                - w_e235 * a.e1235
+                - w_e245 * a.e1245
+                - w_e345 * a.e1345
+                - w_e12345 * a.e2345,
+            e2: w_e2 * a.s - w_e1 * a.e12 + w_e3 * a.e23 + w_e4 * a.e24
+                - w_e5 * a.e25
+                - w_e123 * a.e13
+                - w_e124 * a.e14
+                + w_e125 * a.e15
+                - w_e134 * a.e1234
+                + w_e135 * a.e1235
+                + w_e145 * a.e1245
+                + w_e234 * a.e34
+                - w_e235 * a.e35
+                - w_e245 * a.e45
+                - w_e345 * a.e2345
+                + w_e12345 * a.e1345,
+            e3: w_e3 * a.s - w_e1 * a.e13 - w_e2 * a.e23 + w_e4 * a.e34 - w_e5 * a.e35
+                + w_e123 * a.e12
+                + w_e124 * a.e1234
+                - w_e125 * a.e1235
+                - w_e134 * a.e14
+                + w_e135 * a.e15
+                + w_e145 * a.e1345
+                - w_e234 * a.e24
+                + w_e235 * a.e25
+                + w_e245 * a.e2345
+                - w_e345 * a.e45
+                - w_e12345 * a.e1245,
+            e4: w_e4 * a.s
+                - w_e1 * a.e14
+                - w_e2 * a.e24
+                - w_e3 * a.e34
+                - w_e5 * a.e45
+                - w_e123 * a.e1234
+                + w_e124 * a.e12
+                - w_e125 * a.e1245
+                + w_e134 * a.e13
+                - w_e135 * a.e1345
+                + w_e145 * a.e15
+                + w_e234 * a.e23
+                - w_e235 * a.e2345
+                + w_e245 * a.e25
+                + w_e345 * a.e35
+                + w_e12345 * a.e1235,
+            e5: w_e5 * a.s
+                - w_e1 * a.e15
+                - w_e2 * a.e25
+                - w_e3 * a.e35
+                - w_e4 * a.e45
+                - w_e123 * a.e1235
+                - w_e124 * a.e1245
+                + w_e125 * a.e12
+                - w_e134 * a.e1345
+                + w_e135 * a.e13
+                + w_e145 * a.e14
+                - w_e234 * a.e2345
+                + w_e235 * a.e23
+                + w_e245 * a.e24
+                + w_e345 * a.e34
+                + w_e12345 * a.e1234,
+        }
+    }
+}
+
+/// Sandwich `v x ṽ` of a Motor `v` and a Bivector `x` -> Bivector.
+impl<T: Scalar> Sandwich<Bivector<T>> for Motor<T> {
+    type Output = Bivector<T>;
+    #[inline]
+    fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
+        let a = self;
+        let w_s = a.e15 * x.e15
+            - a.e12 * x.e12
+            - a.e13 * x.e13
+            - a.e14 * x.e14
+            - a.e23 * x.e23
+            - a.e24 * x.e24
+            + a.e25 * x.e25
+            - a.e34 * x.e34
+            + a.e35 * x.e35
+            + a.e45 * x.e45;
+        let w_e12 = a.s * x.e12 - a.e13 * x.e23 - a.e14 * x.e24
+            + a.e15 * x.e25
+            + a.e23 * x.e13
+            + a.e24 * x.e14
+            - a.e25 * x.e15
+            - a.e1234 * x.e34
+            + a.e1235 * x.e35
+            + a.e1245 * x.e45;
+        let w_e13 = a.s * x.e13 + a.e12 * x.e23 - a.e14 * x.e34 + a.e15 * x.e35 - a.e23 * x.e12
+            + a.e34 * x.e14
+            - a.e35 * x.e15
+            + a.e1234 * x.e24
+            - a.e1235 * x.e25
+            + a.e1345 * x.e45;
+        let w_e14 = a.s * x.e14 + a.e12 * x.e24 + a.e13 * x.e34 + a.e15 * x.e45
+            - a.e24 * x.e12
+            - a.e34 * x.e13
+            - a.e45 * x.e15
+            - a.e1234 * x.e23
+            - a.e1245 * x.e25
+            - a.e1345 * x.e35;
+        let w_e15 = a.s * x.e15 + a.e12 * x.e25 + a.e13 * x.e35 + a.e14 * x.e45
+            - a.e25 * x.e12
+            - a.e35 * x.e13
+            - a.e45 * x.e14
+            - a.e1235 * x.e23
+            - a.e1245 * x.e24
+            - a.e1345 * x.e34;
+        let w_e23 = a.s * x.e23 - a.e12 * x.e13 + a.e13 * x.e12 - a.e24 * x.e34
+            + a.e25 * x.e35
+            + a.e34 * x.e24
+            - a.e35 * x.e25
+            - a.e1234 * x.e14
+            + a.e1235 * x.e15
+            + a.e2345 * x.e45;
+        let w_e24 = a.s * x.e24 - a.e12 * x.e14 + a.e14 * x.e12 + a.e23 * x.e34 + a.e25 * x.e45
+            - a.e34 * x.e23
+            - a.e45 * x.e25
+            + a.e1234 * x.e13
+            + a.e1245 * x.e15
+            - a.e2345 * x.e35;
+        let w_e25 = a.s * x.e25 - a.e12 * x.e15 + a.e15 * x.e12 + a.e23 * x.e35 + a.e24 * x.e45
+            - a.e35 * x.e23
+            - a.e45 * x.e24
+            + a.e1235 * x.e13
+            + a.e1245 * x.e14
+            - a.e2345 * x.e34;
+        let w_e34 = a.s * x.e34 - a.e13 * x.e14 + a.e14 * x.e13 - a.e23 * x.e24
+            + a.e24 * x.e23
+            + a.e35 * x.e45
+            - a.e45 * x.e35
+            - a.e1234 * x.e12
+            + a.e1345 * x.e15
+            + a.e2345 * x.e25;
+        let w_e35 = a.s * x.e35 - a.e13 * x.e15 + a.e15 * x.e13 - a.e23 * x.e25
+            + a.e25 * x.e23
+            + a.e34 * x.e45
+            - a.e45 * x.e34
+            - a.e1235 * x.e12
+            + a.e1345 * x.e14
+            + a.e2345 * x.e24;
+        let w_e45 = a.s * x.e45 - a.e14 * x.e15 + a.e15 * x.e14 - a.e24 * x.e25 + a.e25 * x.e24
+            - a.e34 * x.e35
+            + a.e35 * x.e34
+            - a.e1245 * x.e12
+            - a.e1345 * x.e13
+            - a.e2345 * x.e23;
+        let w_e1234 = a.e12 * x.e34 - a.e13 * x.e24 + a.e14 * x.e23 + a.e23 * x.e14 - a.e24 * x.e13
+            + a.e34 * x.e12
+            + a.e1235 * x.e45
+            - a.e1245 * x.e35
+            + a.e1345 * x.e25
+            - a.e2345 * x.e15;
+        let w_e1235 = a.e12 * x.e35 - a.e13 * x.e25 + a.e15 * x.e23 + a.e23 * x.e15 - a.e25 * x.e13
+            + a.e35 * x.e12
+            + a.e1234 * x.e45
+            - a.e1245 * x.e34
+            + a.e1345 * x.e24
+            - a.e2345 * x.e14;
+        let w_e1245 = a.e12 * x.e45 - a.e14 * x.e25 + a.e15 * x.e24 + a.e24 * x.e15 - a.e25 * x.e14
+            + a.e45 * x.e12
+            - a.e1234 * x.e35
+            + a.e1235 * x.e34
+            - a.e1345 * x.e23
+            + a.e2345 * x.e13;
+        let w_e1345 = a.e13 * x.e45 - a.e14 * x.e35 + a.e15 * x.e34 + a.e34 * x.e15 - a.e35 * x.e14
+            + a.e45 * x.e13
+            + a.e1234 * x.e25
+            - a.e1235 * x.e24
+            + a.e1245 * x.e23
+            - a.e2345 * x.e12;
+        let w_e2345 = a.e23 * x.e45 - a.e24 * x.e35 + a.e25 * x.e34 + a.e34 * x.e25 - a.e35 * x.e24
+            + a.e45 * x.e23
+            - a.e1234 * x.e15
+            + a.e1235 * x.e14
+            - a.e1245 * x.e13
+            + a.e1345 * x.e12;
+        Bivector {
+            e12: w_e12 * a.s - w_s * a.e12 + w_e13 * a.e23 + w_e14 * a.e24
+                - w_e15 * a.e25
+                - w_e23 * a.e13
+                - w_e24 * a.e14
+                + w_e25 * a.e15
+                - w_e34 * a.e1234
+                + w_e35 * a.e1235
+                + w_e45 * a.e1245
+                + w_e1234 * a.e34
+                - w_e1235 * a.e35
+                - w_e1245 * a.e45
+                - w_e1345 * a.e2345
+                + w_e2345 * a.e1345,
+            e13: w_e13 * a.s - w_s * a.e13 - w_e12 * a.e23 + w_e14 * a.e34 - w_e15 * a.e35
+                + w_e23 * a.e12
+                + w_e24 * a.e1234
+                - w_e25 * a.e1235
+                - w_e34 * a.e14
+                + w_e35 * a.e15
+                + w_e45 * a.e1345
+                - w_e1234 * a.e24
+                + w_e1235 * a.e25
+                + w_e1245 * a.e2345
+                - w_e1345 * a.e45
+                - w_e2345 * a.e1245,
+            e14: w_e14 * a.s
+                - w_s * a.e14
+                - w_e12 * a.e24
+                - w_e13 * a.e34
+                - w_e15 * a.e45
+                - w_e23 * a.e1234
+                + w_e24 * a.e12
+                - w_e25 * a.e1245
+                + w_e34 * a.e13
+                - w_e35 * a.e1345
+                + w_e45 * a.e15
+                + w_e1234 * a.e23
+                - w_e1235 * a.e2345
+                + w_e1245 * a.e25
+                + w_e1345 * a.e35
+                + w_e2345 * a.e1235,
+            e15: w_e15 * a.s
+                - w_s * a.e15
+                - w_e12 * a.e25
+                - w_e13 * a.e35
+                - w_e14 * a.e45
+                - w_e23 * a.e1235
+                - w_e24 * a.e1245
+                + w_e25 * a.e12
+                - w_e34 * a.e1345
+                + w_e35 * a.e13
+                + w_e45 * a.e14
+                - w_e1234 * a.e2345
+                + w_e1235 * a.e23
+                + w_e1245 * a.e24
+                + w_e1345 * a.e34
+                + w_e2345 * a.e1234,
+            e23: w_e12 * a.e13 - w_s * a.e23 - w_e13 * a.e12 - w_e14 * a.e1234
+                + w_e15 * a.e1235
+                + w_e23 * a.s
+                + w_e24 * a.e34
+                - w_e25 * a.e35
+                - w_e34 * a.e24
+                + w_e35 * a.e25
+                + w_e45 * a.e2345
+                + w_e1234 * a.e14
+                - w_e1235 * a.e15
+                - w_e1245 * a.e1345
+                + w_e1345 * a.e1245
+                - w_e2345 * a.e45,
+            e24: w_e12 * a.e14 - w_s * a.e24 + w_e13 * a.e1234 - w_e14 * a.e12 + w_e15 * a.e1245
+                - w_e23 * a.e34
+                + w_e24 * a.s
+                - w_e25 * a.e45
+                + w_e34 * a.e23
+                - w_e35 * a.e2345
+                + w_e45 * a.e25
+                - w_e1234 * a.e13
+                + w_e1235 * a.e1345
+                - w_e1245 * a.e15
+                - w_e1345 * a.e1235
+                + w_e2345 * a.e35,
+            e25: w_e12 * a.e15 - w_s * a.e25 + w_e13 * a.e1235 + w_e14 * a.e1245
+                - w_e15 * a.e12
+                - w_e23 * a.e35
+                - w_e24 * a.e45
+                + w_e25 * a.s
+                - w_e34 * a.e2345
+                + w_e35 * a.e23
+                + w_e45 * a.e24
+                + w_e1234 * a.e1345
+                - w_e1235 * a.e13
+                - w_e1245 * a.e14
+                - w_e1345 * a.e1234
+                + w_e2345 * a.e34,
+            e34: w_e13 * a.e14 - w_s * a.e34 - w_e12 * a.e1234 - w_e14 * a.e13
+                + w_e15 * a.e1345
+                + w_e23 * a.e24
+                - w_e24 * a.e23
+                + w_e25 * a.e2345
+                + w_e34 * a.s
+                - w_e35 * a.e45
+                + w_e45 * a.e35
+                + w_e1234 * a.e12
+                - w_e1235 * a.e1245
+                + w_e1245 * a.e1235
+                - w_e1345 * a.e15
+                - w_e2345 * a.e25,
+            e35: w_e13 * a.e15 - w_s * a.e35 - w_e12 * a.e1235 + w_e14 * a.e1345 - w_e15 * a.e13
+                + w_e23 * a.e25
+                + w_e24 * a.e2345
+                - w_e25 * a.e23
+                - w_e34 * a.e45
+                + w_e35 * a.s
+                + w_e45 * a.e34
+                - w_e1234 * a.e1245
+                + w_e1235 * a.e12
+                + w_e1245 * a.e1234
+                - w_e1345 * a.e14
+                - w_e2345 * a.e24,
+            e45: w_e14 * a.e15
+                - w_s * a.e45
+                - w_e12 * a.e1245
+                - w_e13 * a.e1345
+                - w_e15 * a.e14
+                - w_e23 * a.e2345
+                + w_e24 * a.e25
+                - w_e25 * a.e24
+                + w_e34 * a.e35
+                - w_e35 * a.e34
+                + w_e45 * a.s
+                + w_e1234 * a.e1235
+                - w_e1235 * a.e1234
+                + w_e1245 * a.e12
+                + w_e1345 * a.e13
+                + w_e2345 * a.e23,
+        }
+    }
+}
+
+/// Sandwich `v x ṽ` of a Motor `v` and a Trivector `x` -> Trivector.
+impl<T: Scalar> Sandwich<Trivector<T>> for Motor<T> {
+    type Output = Trivector<T>;
+    #[inline]
+    fn sandwich(self, x: Trivector<T>) -> Trivector<T> {
+        let a = self;
+        let w_e1 = a.e25 * x.e125 - a.e23 * x.e123 - a.e24 * x.e124 - a.e34 * x.e134
+            + a.e35 * x.e135
+            + a.e45 * x.e145
+            - a.e1234 * x.e234
+            + a.e1235 * x.e235
+            + a.e1245 * x.e245
+            + a.e1345 * x.e345;
+        let w_e2 = a.e13 * x.e123 + a.e14 * x.e124 - a.e15 * x.e125 - a.e34 * x.e234
+            + a.e35 * x.e235
+            + a.e45 * x.e245
+            + a.e1234 * x.e134
+            - a.e1235 * x.e135
+            - a.e1245 * x.e145
+            + a.e2345 * x.e345;
+        let w_e3 = a.e14 * x.e134 - a.e12 * x.e123 - a.e15 * x.e135 + a.e24 * x.e234
+            - a.e25 * x.e235
+            + a.e45 * x.e345
+            - a.e1234 * x.e124
+            + a.e1235 * x.e125
+            - a.e1345 * x.e145
+            - a.e2345 * x.e245;
+        let w_e4 = a.e1234 * x.e123
+            - a.e12 * x.e124
+            - a.e13 * x.e134
+            - a.e15 * x.e145
+            - a.e23 * x.e234
+            - a.e25 * x.e245
+            - a.e35 * x.e345
+            + a.e1245 * x.e125
+            + a.e1345 * x.e135
+            + a.e2345 * x.e235;
+        let w_e5 = a.e1235 * x.e123
+            - a.e12 * x.e125
+            - a.e13 * x.e135
+            - a.e14 * x.e145
+            - a.e23 * x.e235
+            - a.e24 * x.e245
+            - a.e34 * x.e345
+            + a.e1245 * x.e124
+            + a.e1345 * x.e134
+            + a.e2345 * x.e234;
+        let w_e123 = a.s * x.e123 + a.e14 * x.e234 - a.e15 * x.e235 - a.e24 * x.e134
+            + a.e25 * x.e135
+            + a.e34 * x.e124
+            - a.e35 * x.e125
+            + a.e1245 * x.e345
+            - a.e1345 * x.e245
+            + a.e2345 * x.e145;
+        let w_e124 =
+            a.s * x.e124 - a.e13 * x.e234 - a.e15 * x.e245 + a.e23 * x.e134 + a.e25 * x.e145
+                - a.e34 * x.e123
+                - a.e45 * x.e125
+                - a.e1235 * x.e345
+                + a.e1345 * x.e235
+                - a.e2345 * x.e135;
+        let w_e125 =
+            a.s * x.e125 - a.e13 * x.e235 - a.e14 * x.e245 + a.e23 * x.e135 + a.e24 * x.e145
+                - a.e35 * x.e123
+                - a.e45 * x.e124
+                - a.e1234 * x.e345
+                + a.e1345 * x.e234
+                - a.e2345 * x.e134;
+        let w_e134 = a.s * x.e134 + a.e12 * x.e234 - a.e15 * x.e345 - a.e23 * x.e124
+            + a.e24 * x.e123
+            + a.e35 * x.e145
+            - a.e45 * x.e135
+            + a.e1235 * x.e245
+            - a.e1245 * x.e235
+            + a.e2345 * x.e125;
+        let w_e135 = a.s * x.e135 + a.e12 * x.e235 - a.e14 * x.e345 - a.e23 * x.e125
+            + a.e25 * x.e123
+            + a.e34 * x.e145
+            - a.e45 * x.e134
+            + a.e1234 * x.e245
+            - a.e1245 * x.e234
+            + a.e2345 * x.e124;
+        let w_e145 = a.s * x.e145 + a.e12 * x.e245 + a.e13 * x.e345 - a.e24 * x.e125
+            + a.e25 * x.e124
+            - a.e34 * x.e135
+            + a.e35 * x.e134
+            - a.e1234 * x.e235
+            + a.e1235 * x.e234
+            - a.e2345 * x.e123;
+        let w_e234 =
+            a.s * x.e234 - a.e12 * x.e134 + a.e13 * x.e124 - a.e14 * x.e123 - a.e25 * x.e345
+                + a.e35 * x.e245
+                - a.e45 * x.e235
+                - a.e1235 * x.e145
+                + a.e1245 * x.e135
+                - a.e1345 * x.e125;
+        let w_e235 =
+            a.s * x.e235 - a.e12 * x.e135 + a.e13 * x.e125 - a.e15 * x.e123 - a.e24 * x.e345
+                + a.e34 * x.e245
+                - a.e45 * x.e234
+                - a.e1234 * x.e145
+                + a.e1245 * x.e134
+                - a.e1345 * x.e124;
+        let w_e245 = a.s * x.e245 - a.e12 * x.e145 + a.e14 * x.e125 - a.e15 * x.e124
+            + a.e23 * x.e345
+            - a.e34 * x.e235
+            + a.e35 * x.e234
+            + a.e1234 * x.e135
+            - a.e1235 * x.e134
+            + a.e1345 * x.e123;
+        let w_e345 =
+            a.s * x.e345 - a.e13 * x.e145 + a.e14 * x.e135 - a.e15 * x.e134 - a.e23 * x.e245
+                + a.e24 * x.e235
+                - a.e25 * x.e234
+                - a.e1234 * x.e125
+                + a.e1235 * x.e124
+                - a.e1245 * x.e123;
+        let w_e12345 = a.e12 * x.e345 - a.e13 * x.e245 + a.e14 * x.e235 - a.e15 * x.e234
+            + a.e23 * x.e145
+            - a.e24 * x.e135
+            + a.e25 * x.e134
+            + a.e34 * x.e125
+            - a.e35 * x.e124
+            + a.e45 * x.e123;
+        Trivector {
+            e123: w_e2 * a.e13 - w_e1 * a.e23 - w_e3 * a.e12 - w_e4 * a.e1234
+                + w_e5 * a.e1235
+                + w_e123 * a.s
+                + w_e124 * a.e34
+                - w_e125 * a.e35
+                - w_e134 * a.e24
+                + w_e135 * a.e25
+                + w_e145 * a.e2345
+                + w_e234 * a.e14
+                - w_e235 * a.e15
+                - w_e245 * a.e1345
+                + w_e345 * a.e1245
+                - w_e12345 * a.e45,
+            e124: w_e2 * a.e14 - w_e1 * a.e24 + w_e3 * a.e1234 - w_e4 * a.e12 + w_e5 * a.e1245
+                - w_e123 * a.e34
+                + w_e124 * a.s
+                - w_e125 * a.e45
+                + w_e134 * a.e23
+                - w_e135 * a.e2345
+                + w_e145 * a.e25
+                - w_e234 * a.e13
+                + w_e235 * a.e1345
+                - w_e245 * a.e15
+                - w_e345 * a.e1235
+                + w_e12345 * a.e35,
+            e125: w_e2 * a.e15 - w_e1 * a.e25 + w_e3 * a.e1235 + w_e4 * a.e1245
+                - w_e5 * a.e12
+                - w_e123 * a.e35
+                - w_e124 * a.e45
+                + w_e125 * a.s
+                - w_e134 * a.e2345
+                + w_e135 * a.e23
+                + w_e145 * a.e24
+                + w_e234 * a.e1345
+                - w_e235 * a.e13
+                - w_e245 * a.e14
+                - w_e345 * a.e1234
+                + w_e12345 * a.e34,
+            e134: w_e3 * a.e14 - w_e1 * a.e34 - w_e2 * a.e1234 - w_e4 * a.e13
+                + w_e5 * a.e1345
+                + w_e123 * a.e24
+                - w_e124 * a.e23
+                + w_e125 * a.e2345
+                + w_e134 * a.s
+                - w_e135 * a.e45
+                + w_e145 * a.e35
+                + w_e234 * a.e12
+                - w_e235 * a.e1245
+                + w_e245 * a.e1235
+                - w_e345 * a.e15
+                - w_e12345 * a.e25,
+            e135: w_e3 * a.e15 - w_e1 * a.e35 - w_e2 * a.e1235 + w_e4 * a.e1345 - w_e5 * a.e13
+                + w_e123 * a.e25
+                + w_e124 * a.e2345
+                - w_e125 * a.e23
+                - w_e134 * a.e45
+                + w_e135 * a.s
+                + w_e145 * a.e34
+                - w_e234 * a.e1245
+                + w_e235 * a.e12
+                + w_e245 * a.e1234
+                - w_e345 * a.e14
+                - w_e12345 * a.e24,
+            e145: w_e4 * a.e15
+                - w_e1 * a.e45
+                - w_e2 * a.e1245
+                - w_e3 * a.e1345
+                - w_e5 * a.e14
+                - w_e123 * a.e2345
+                + w_e124 * a.e25
+                - w_e125 * a.e24
+                + w_e134 * a.e35
+                - w_e135 * a.e34
+                + w_e145 * a.s
+                + w_e234 * a.e1235
+                - w_e235 * a.e1234
+                + w_e245 * a.e12
+                + w_e345 * a.e13
+                + w_e12345 * a.e23,
+            e234: w_e1 * a.e1234 - w_e2 * a.e34 + w_e3 * a.e24 - w_e4 * a.e23 + w_e5 * a.e2345
+                - w_e123 * a.e14
+                + w_e124 * a.e13
+                - w_e125 * a.e1345
+                - w_e134 * a.e12
+                + w_e135 * a.e1245
+                - w_e145 * a.e1235
+                + w_e234 * a.s
+                - w_e235 * a.e45
+                + w_e245 * a.e35
+                - w_e345 * a.e25
+                + w_e12345 * a.e15,
+            e235: w_e1 * a.e1235 - w_e2 * a.e35 + w_e3 * a.e25 + w_e4 * a.e2345
+                - w_e5 * a.e23
+                - w_e123 * a.e15
+                - w_e124 * a.e1345
+                + w_e125 * a.e13
+                + w_e134 * a.e1245
+                - w_e135 * a.e12
+                - w_e145 * a.e1234
+                - w_e234 * a.e45
+                + w_e235 * a.s
+                + w_e245 * a.e34
+                - w_e345 * a.e24
+                + w_e12345 * a.e14,
+            e245: w_e1 * a.e1245 - w_e2 * a.e45 - w_e3 * a.e2345 + w_e4 * a.e25 - w_e5 * a.e24
+                + w_e123 * a.e1345
+                - w_e124 * a.e15
+                + w_e125 * a.e14
+                - w_e134 * a.e1235
+                + w_e135 * a.e1234
+                - w_e145 * a.e12
+                + w_e234 * a.e35
+                - w_e235 * a.e34
+                + w_e245 * a.s
+                + w_e345 * a.e23
+                - w_e12345 * a.e13,
+            e345: w_e1 * a.e1345 + w_e2 * a.e2345 - w_e3 * a.e45 + w_e4 * a.e35
+                - w_e5 * a.e34
+                - w_e123 * a.e1245
+                + w_e124 * a.e1235
+                - w_e125 * a.e1234
+                - w_e134 * a.e15
+                + w_e135 * a.e14
+                - w_e145 * a.e13
+                - w_e234 * a.e25
+                + w_e235 * a.e24
+                - w_e245 * a.e23
+                + w_e345 * a.s
+                + w_e12345 * a.e12,
+        }
+    }
+}
+
+/// Sandwich `v x ṽ` of a Motor `v` and a Quadvector `x` -> Quadvector.
+impl<T: Scalar> Sandwich<Quadvector<T>> for Motor<T> {
+    type Output = Quadvector<T>;
+    #[inline]
+    fn sandwich(self, x: Quadvector<T>) -> Quadvector<T> {
+        let a = self;
+        let w_s = a.e1234 * x.e1234
+            - a.e1235 * x.e1235
+            - a.e1245 * x.e1245
+            - a.e1345 * x.e1345
+            - a.e2345 * x.e2345;
+        let w_e12 = a.e35 * x.e1235 - a.e34 * x.e1234 + a.e45 * x.e1245 - a.e1345 * x.e2345
+            + a.e2345 * x.e1345;
+        let w_e13 = a.e24 * x.e1234 - a.e25 * x.e1235 + a.e45 * x.e1345 + a.e1245 * x.e2345
+            - a.e2345 * x.e1245;
+        let w_e14 = a.e2345 * x.e1235
+            - a.e23 * x.e1234
+            - a.e25 * x.e1245
+            - a.e35 * x.e1345
+            - a.e1235 * x.e2345;
+        let w_e15 = a.e2345 * x.e1234
+            - a.e23 * x.e1235
+            - a.e24 * x.e1245
+            - a.e34 * x.e1345
+            - a.e1234 * x.e2345;
+        let w_e23 = a.e15 * x.e1235 - a.e14 * x.e1234 + a.e45 * x.e2345 - a.e1245 * x.e1345
+            + a.e1345 * x.e1245;
+        let w_e24 = a.e13 * x.e1234 + a.e15 * x.e1245 - a.e35 * x.e2345 + a.e1235 * x.e1345
+            - a.e1345 * x.e1235;
+        let w_e25 = a.e13 * x.e1235 + a.e14 * x.e1245 - a.e34 * x.e2345 + a.e1234 * x.e1345
+            - a.e1345 * x.e1234;
+        let w_e34 = a.e15 * x.e1345 - a.e12 * x.e1234 + a.e25 * x.e2345 - a.e1235 * x.e1245
+            + a.e1245 * x.e1235;
+        let w_e35 = a.e14 * x.e1345 - a.e12 * x.e1235 + a.e24 * x.e2345 - a.e1234 * x.e1245
+            + a.e1245 * x.e1234;
+        let w_e45 = a.e1234 * x.e1235
+            - a.e12 * x.e1245
+            - a.e13 * x.e1345
+            - a.e23 * x.e2345
+            - a.e1235 * x.e1234;
+        let w_e1234 =
+            a.s * x.e1234 + a.e15 * x.e2345 - a.e25 * x.e1345 + a.e35 * x.e1245 - a.e45 * x.e1235;
+        let w_e1235 =
+            a.s * x.e1235 + a.e14 * x.e2345 - a.e24 * x.e1345 + a.e34 * x.e1245 - a.e45 * x.e1234;
+        let w_e1245 =
+            a.s * x.e1245 - a.e13 * x.e2345 + a.e23 * x.e1345 - a.e34 * x.e1235 + a.e35 * x.e1234;
+        let w_e1345 =
+            a.s * x.e1345 + a.e12 * x.e2345 - a.e23 * x.e1245 + a.e24 * x.e1235 - a.e25 * x.e1234;
+        let w_e2345 =
+            a.s * x.e2345 - a.e12 * x.e1345 + a.e13 * x.e1245 - a.e14 * x.e1235 + a.e15 * x.e1234;
+        Quadvector {
+            e1234: w_s * a.e1234 - w_e12 * a.e34 + w_e13 * a.e24 - w_e14 * a.e23 + w_e15 * a.e2345
+                - w_e23 * a.e14
+                + w_e24 * a.e13
+                - w_e25 * a.e1345
+                - w_e34 * a.e12
+                + w_e35 * a.e1245
+                - w_e45 * a.e1235
+                + w_e1234 * a.s
+                - w_e1235 * a.e45
+                + w_e1245 * a.e35
+                - w_e1345 * a.e25
+                + w_e2345 * a.e15,
+            e1235: w_s * a.e1235 - w_e12 * a.e35 + w_e13 * a.e25 + w_e14 * a.e2345
+                - w_e15 * a.e23
+                - w_e23 * a.e15
+                - w_e24 * a.e1345
+                + w_e25 * a.e13
+                + w_e34 * a.e1245
+                - w_e35 * a.e12
+                - w_e45 * a.e1234
+                - w_e1234 * a.e45
+                + w_e1235 * a.s
+                + w_e1245 * a.e34
+                - w_e1345 * a.e24
+                + w_e2345 * a.e14,
+            e1245: w_s * a.e1245 - w_e12 * a.e45 - w_e13 * a.e2345 + w_e14 * a.e25 - w_e15 * a.e24
+                + w_e23 * a.e1345
+                - w_e24 * a.e15
+                + w_e25 * a.e14
+                - w_e34 * a.e1235
+                + w_e35 * a.e1234
+                - w_e45 * a.e12
+                + w_e1234 * a.e35
+                - w_e1235 * a.e34
+                + w_e1245 * a.s
+                + w_e1345 * a.e23
+                - w_e2345 * a.e13,
+            e1345: w_s * a.e1345 + w_e12 * a.e2345 - w_e13 * a.e45 + w_e14 * a.e35
+                - w_e15 * a.e34
+                - w_e23 * a.e1245
+                + w_e24 * a.e1235
+                - w_e25 * a.e1234
+                - w_e34 * a.e15
+                + w_e35 * a.e14
+                - w_e45 * a.e13
+                - w_e1234 * a.e25
+                + w_e1235 * a.e24
+                - w_e1245 * a.e23
+                + w_e1345 * a.s
+                + w_e2345 * a.e12,
+            e2345: w_s * a.e2345 - w_e12 * a.e1345 + w_e13 * a.e1245 - w_e14 * a.e1235
+                + w_e15 * a.e1234
+                - w_e23 * a.e45
+                + w_e24 * a.e35
+                - w_e25 * a.e34
+                - w_e34 * a.e25
+                + w_e35 * a.e24
+                - w_e45 * a.e23
+                + w_e1234 * a.e15
+                - w_e1235 * a.e14
+                + w_e1245 * a.e13
+                - w_e1345 * a.e12
+                + w_e2345 * a.s,
+        }
+    }
+}
+
+impl<T: Scalar> Motor<T> {
+    /// The sandwich `x ↦ v x ṽ` on a [`Vector`] as a matrix:
+    /// `(v x ṽ)ᵢ = Σⱼ m[i][j] xⱼ`, rows and columns in the blade order of
+    /// [`Vector`]. The map is linear in `x`, so worked out once it applies the
+    /// versor to many operands.
+    #[must_use]
+    pub fn vector_map(self) -> [[T; 5]; 5] {
+        let a = self;
         let s_s = a.s * a.s;
         let s_e12 = a.s * a.e12;
         let s_e13 = a.s * a.e13;
@@ -565,158 +1103,141 @@ impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
         let e1345_e1345 = a.e1345 * a.e1345;
         let e1345_e2345 = a.e1345 * a.e2345;
         let e2345_e2345 = a.e2345 * a.e2345;
-        Vector {
-            e1: (s_s - e12_e12 - e13_e13 - e14_e14 + e15_e15 + e23_e23 + e24_e24 - e25_e25
-                + e34_e34
-                - e35_e35
-                - e45_e45
-                - e1234_e1234
-                + e1235_e1235
-                + e1245_e1245
-                + e1345_e1345
-                - e2345_e2345)
-                * x.e1
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23) - (e14_e24 + e14_e24)
+        [
+            [
+                s_s - e12_e12 - e13_e13 - e14_e14 + e15_e15 + e23_e23 + e24_e24 - e25_e25 + e34_e34
+                    - e35_e35
+                    - e45_e45
+                    - e1234_e1234
+                    + e1235_e1235
+                    + e1245_e1245
+                    + e1345_e1345
+                    - e2345_e2345,
+                (s_e12 + s_e12) - (e13_e23 + e13_e23) - (e14_e24 + e14_e24)
                     + (e15_e25 + e15_e25)
                     + (e34_e1234 + e34_e1234)
                     - (e35_e1235 + e35_e1235)
                     - (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e2
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23) - (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
+                    + (e1345_e2345 + e1345_e2345),
+                (s_e13 + s_e13) + (e12_e23 + e12_e23) - (e14_e34 + e14_e34) + (e15_e35 + e15_e35)
                     - (e24_e1234 + e24_e1234)
                     + (e25_e1235 + e25_e1235)
                     - (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e3
-                + ((s_e14 + s_e14)
+                    - (e1245_e2345 + e1245_e2345),
+                (s_e14 + s_e14)
                     + (e12_e24 + e12_e24)
                     + (e13_e34 + e13_e34)
                     + (e15_e45 + e15_e45)
                     + (e23_e1234 + e23_e1234)
                     + (e25_e1245 + e25_e1245)
                     + (e35_e1345 + e35_e1345)
-                    + (e1235_e2345 + e1235_e2345))
-                    * x.e4
-                + (-(s_e15 + s_e15)
+                    + (e1235_e2345 + e1235_e2345),
+                -(s_e15 + s_e15)
                     - (e12_e25 + e12_e25)
                     - (e13_e35 + e13_e35)
                     - (e14_e45 + e14_e45)
                     - (e23_e1235 + e23_e1235)
                     - (e24_e1245 + e24_e1245)
                     - (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e5,
-            e2: ((e15_e25 + e15_e25)
-                - (s_e12 + s_e12)
-                - (e13_e23 + e13_e23)
-                - (e14_e24 + e14_e24)
-                - (e34_e1234 + e34_e1234)
-                + (e35_e1235 + e35_e1235)
-                + (e45_e1245 + e45_e1245)
-                + (e1345_e2345 + e1345_e2345))
-                * x.e1
-                + (s_s - e12_e12 + e13_e13 + e14_e14 - e15_e15 - e23_e23 - e24_e24
-                    + e25_e25
-                    + e34_e34
+                    - (e1234_e2345 + e1234_e2345),
+            ],
+            [
+                (e15_e25 + e15_e25)
+                    - (s_e12 + s_e12)
+                    - (e13_e23 + e13_e23)
+                    - (e14_e24 + e14_e24)
+                    - (e34_e1234 + e34_e1234)
+                    + (e35_e1235 + e35_e1235)
+                    + (e45_e1245 + e45_e1245)
+                    + (e1345_e2345 + e1345_e2345),
+                s_s - e12_e12 + e13_e13 + e14_e14 - e15_e15 - e23_e23 - e24_e24 + e25_e25 + e34_e34
                     - e35_e35
                     - e45_e45
                     - e1234_e1234
                     + e1235_e1235
                     + e1245_e1245
                     - e1345_e1345
-                    + e2345_e2345)
-                    * x.e2
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13) + (e14_e1234 + e14_e1234)
+                    + e2345_e2345,
+                (s_e23 + s_e23) - (e12_e13 + e12_e13) + (e14_e1234 + e14_e1234)
                     - (e15_e1235 + e15_e1235)
                     - (e24_e34 + e24_e34)
                     + (e25_e35 + e25_e35)
                     - (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e3
-                + ((s_e24 + s_e24)
+                    + (e1245_e1345 + e1245_e1345),
+                (s_e24 + s_e24)
                     - (e12_e14 + e12_e14)
                     - (e13_e1234 + e13_e1234)
                     - (e15_e1245 + e15_e1245)
                     + (e23_e34 + e23_e34)
                     + (e25_e45 + e25_e45)
                     + (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e4
-                + ((e12_e15 + e12_e15) - (s_e25 + s_e25)
+                    - (e1235_e1345 + e1235_e1345),
+                (e12_e15 + e12_e15) - (s_e25 + s_e25)
                     + (e13_e1235 + e13_e1235)
                     + (e14_e1245 + e14_e1245)
                     - (e23_e35 + e23_e35)
                     - (e24_e45 + e24_e45)
                     - (e34_e2345 + e34_e2345)
-                    + (e1234_e1345 + e1234_e1345))
-                    * x.e5,
-            e3: ((e12_e23 + e12_e23) - (s_e13 + s_e13) - (e14_e34 + e14_e34)
-                + (e15_e35 + e15_e35)
-                + (e24_e1234 + e24_e1234)
-                - (e25_e1235 + e25_e1235)
-                + (e45_e1345 + e45_e1345)
-                - (e1245_e2345 + e1245_e2345))
-                * x.e1
-                + ((e15_e1235 + e15_e1235)
+                    + (e1234_e1345 + e1234_e1345),
+            ],
+            [
+                (e12_e23 + e12_e23) - (s_e13 + s_e13) - (e14_e34 + e14_e34)
+                    + (e15_e35 + e15_e35)
+                    + (e24_e1234 + e24_e1234)
+                    - (e25_e1235 + e25_e1235)
+                    + (e45_e1345 + e45_e1345)
+                    - (e1245_e2345 + e1245_e2345),
+                (e15_e1235 + e15_e1235)
                     - (s_e23 + s_e23)
                     - (e12_e13 + e12_e13)
                     - (e14_e1234 + e14_e1234)
                     - (e24_e34 + e24_e34)
                     + (e25_e35 + e25_e35)
                     + (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e2
-                + (s_s + e12_e12 - e13_e13 + e14_e14 - e15_e15 - e23_e23 + e24_e24
-                    - e25_e25
-                    - e34_e34
+                    + (e1245_e1345 + e1245_e1345),
+                s_s + e12_e12 - e13_e13 + e14_e14 - e15_e15 - e23_e23 + e24_e24 - e25_e25 - e34_e34
                     + e35_e35
                     - e45_e45
                     - e1234_e1234
                     + e1235_e1235
                     - e1245_e1245
                     + e1345_e1345
-                    + e2345_e2345)
-                    * x.e3
-                + ((s_e34 + s_e34) + (e12_e1234 + e12_e1234)
+                    + e2345_e2345,
+                (s_e34 + s_e34) + (e12_e1234 + e12_e1234)
                     - (e13_e14 + e13_e14)
                     - (e15_e1345 + e15_e1345)
                     - (e23_e24 + e23_e24)
                     - (e25_e2345 + e25_e2345)
                     + (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e4
-                + ((e13_e15 + e13_e15) - (s_e35 + s_e35) - (e12_e1235 + e12_e1235)
+                    + (e1235_e1245 + e1235_e1245),
+                (e13_e15 + e13_e15) - (s_e35 + s_e35) - (e12_e1235 + e12_e1235)
                     + (e14_e1345 + e14_e1345)
                     + (e23_e25 + e23_e25)
                     + (e24_e2345 + e24_e2345)
                     - (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e5,
-            e4: ((e12_e24 + e12_e24) - (s_e14 + s_e14) + (e13_e34 + e13_e34) + (e15_e45 + e15_e45)
-                - (e23_e1234 + e23_e1234)
-                - (e25_e1245 + e25_e1245)
-                - (e35_e1345 + e35_e1345)
-                + (e1235_e2345 + e1235_e2345))
-                * x.e1
-                + ((e13_e1234 + e13_e1234) - (s_e24 + s_e24) - (e12_e14 + e12_e14)
+                    - (e1234_e1245 + e1234_e1245),
+            ],
+            [
+                (e12_e24 + e12_e24) - (s_e14 + s_e14) + (e13_e34 + e13_e34) + (e15_e45 + e15_e45)
+                    - (e23_e1234 + e23_e1234)
+                    - (e25_e1245 + e25_e1245)
+                    - (e35_e1345 + e35_e1345)
+                    + (e1235_e2345 + e1235_e2345),
+                (e13_e1234 + e13_e1234) - (s_e24 + s_e24) - (e12_e14 + e12_e14)
                     + (e15_e1245 + e15_e1245)
                     + (e23_e34 + e23_e34)
                     + (e25_e45 + e25_e45)
                     - (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e2
-                + ((e15_e1345 + e15_e1345)
+                    - (e1235_e1345 + e1235_e1345),
+                (e15_e1345 + e15_e1345)
                     - (s_e34 + s_e34)
                     - (e12_e1234 + e12_e1234)
                     - (e13_e14 + e13_e14)
                     - (e23_e24 + e23_e24)
                     + (e25_e2345 + e25_e2345)
                     + (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e3
-                + (s_s + e12_e12 + e13_e13 - e14_e14 - e15_e15 + e23_e23
+                    + (e1235_e1245 + e1235_e1245),
+                s_s + e12_e12 + e13_e13 - e14_e14 - e15_e15 + e23_e23
                     - e24_e24
                     - e25_e25
                     - e34_e34
@@ -726,50 +1247,45 @@ impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
                     - e1235_e1235
                     + e1245_e1245
                     + e1345_e1345
-                    + e2345_e2345)
-                    * x.e4
-                + ((e14_e15 + e14_e15)
+                    + e2345_e2345,
+                (e14_e15 + e14_e15)
                     - (s_e45 + s_e45)
                     - (e12_e1245 + e12_e1245)
                     - (e13_e1345 + e13_e1345)
                     - (e23_e2345 + e23_e2345)
                     + (e24_e25 + e24_e25)
                     + (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e5,
-            e5: ((e12_e25 + e12_e25) - (s_e15 + s_e15) + (e13_e35 + e13_e35) + (e14_e45 + e14_e45)
-                - (e23_e1235 + e23_e1235)
-                - (e24_e1245 + e24_e1245)
-                - (e34_e1345 + e34_e1345)
-                + (e1234_e2345 + e1234_e2345))
-                * x.e1
-                + ((e13_e1235 + e13_e1235) - (s_e25 + s_e25) - (e12_e15 + e12_e15)
+                    + (e1234_e1235 + e1234_e1235),
+            ],
+            [
+                (e12_e25 + e12_e25) - (s_e15 + s_e15) + (e13_e35 + e13_e35) + (e14_e45 + e14_e45)
+                    - (e23_e1235 + e23_e1235)
+                    - (e24_e1245 + e24_e1245)
+                    - (e34_e1345 + e34_e1345)
+                    + (e1234_e2345 + e1234_e2345),
+                (e13_e1235 + e13_e1235) - (s_e25 + s_e25) - (e12_e15 + e12_e15)
                     + (e14_e1245 + e14_e1245)
                     + (e23_e35 + e23_e35)
                     + (e24_e45 + e24_e45)
                     - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e2
-                + ((e14_e1345 + e14_e1345)
+                    - (e1234_e1345 + e1234_e1345),
+                (e14_e1345 + e14_e1345)
                     - (s_e35 + s_e35)
                     - (e12_e1235 + e12_e1235)
                     - (e13_e15 + e13_e15)
                     - (e23_e25 + e23_e25)
                     + (e24_e2345 + e24_e2345)
                     + (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e3
-                + (-(s_e45 + s_e45)
+                    + (e1234_e1245 + e1234_e1245),
+                -(s_e45 + s_e45)
                     - (e12_e1245 + e12_e1245)
                     - (e13_e1345 + e13_e1345)
                     - (e14_e15 + e14_e15)
                     - (e23_e2345 + e23_e2345)
                     - (e24_e25 + e24_e25)
                     - (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e4
-                + (s_s
-                    + e12_e12
+                    - (e1234_e1235 + e1234_e1235),
+                s_s + e12_e12
                     + e13_e13
                     + e14_e14
                     + e15_e15
@@ -783,2267 +1299,8 @@ impl<T: Scalar> Sandwich<Vector<T>> for Motor<T> {
                     + e1235_e1235
                     + e1245_e1245
                     + e1345_e1345
-                    + e2345_e2345)
-                    * x.e5,
-        }
-    }
-}
-
-/// Sandwich `v x ṽ` of a Motor `v` and a Bivector `x` -> Bivector.
-impl<T: Scalar> Sandwich<Bivector<T>> for Motor<T> {
-    type Output = Bivector<T>;
-    #[inline]
-    fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
-        let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e13 = a.s * a.e13;
-        let s_e14 = a.s * a.e14;
-        let s_e15 = a.s * a.e15;
-        let s_e23 = a.s * a.e23;
-        let s_e24 = a.s * a.e24;
-        let s_e25 = a.s * a.e25;
-        let s_e34 = a.s * a.e34;
-        let s_e35 = a.s * a.e35;
-        let s_e45 = a.s * a.e45;
-        let s_e1234 = a.s * a.e1234;
-        let s_e1235 = a.s * a.e1235;
-        let s_e1245 = a.s * a.e1245;
-        let s_e1345 = a.s * a.e1345;
-        let s_e2345 = a.s * a.e2345;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e13 = a.e12 * a.e13;
-        let e12_e14 = a.e12 * a.e14;
-        let e12_e15 = a.e12 * a.e15;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e24 = a.e12 * a.e24;
-        let e12_e25 = a.e12 * a.e25;
-        let e12_e34 = a.e12 * a.e34;
-        let e12_e35 = a.e12 * a.e35;
-        let e12_e45 = a.e12 * a.e45;
-        let e12_e1234 = a.e12 * a.e1234;
-        let e12_e1235 = a.e12 * a.e1235;
-        let e12_e1245 = a.e12 * a.e1245;
-        let e12_e1345 = a.e12 * a.e1345;
-        let e12_e2345 = a.e12 * a.e2345;
-        let e13_e13 = a.e13 * a.e13;
-        let e13_e14 = a.e13 * a.e14;
-        let e13_e15 = a.e13 * a.e15;
-        let e13_e23 = a.e13 * a.e23;
-        let e13_e24 = a.e13 * a.e24;
-        let e13_e25 = a.e13 * a.e25;
-        let e13_e34 = a.e13 * a.e34;
-        let e13_e35 = a.e13 * a.e35;
-        let e13_e45 = a.e13 * a.e45;
-        let e13_e1234 = a.e13 * a.e1234;
-        let e13_e1235 = a.e13 * a.e1235;
-        let e13_e1245 = a.e13 * a.e1245;
-        let e13_e1345 = a.e13 * a.e1345;
-        let e13_e2345 = a.e13 * a.e2345;
-        let e14_e14 = a.e14 * a.e14;
-        let e14_e15 = a.e14 * a.e15;
-        let e14_e23 = a.e14 * a.e23;
-        let e14_e24 = a.e14 * a.e24;
-        let e14_e25 = a.e14 * a.e25;
-        let e14_e34 = a.e14 * a.e34;
-        let e14_e35 = a.e14 * a.e35;
-        let e14_e45 = a.e14 * a.e45;
-        let e14_e1234 = a.e14 * a.e1234;
-        let e14_e1235 = a.e14 * a.e1235;
-        let e14_e1245 = a.e14 * a.e1245;
-        let e14_e1345 = a.e14 * a.e1345;
-        let e14_e2345 = a.e14 * a.e2345;
-        let e15_e15 = a.e15 * a.e15;
-        let e15_e23 = a.e15 * a.e23;
-        let e15_e24 = a.e15 * a.e24;
-        let e15_e25 = a.e15 * a.e25;
-        let e15_e34 = a.e15 * a.e34;
-        let e15_e35 = a.e15 * a.e35;
-        let e15_e45 = a.e15 * a.e45;
-        let e15_e1234 = a.e15 * a.e1234;
-        let e15_e1235 = a.e15 * a.e1235;
-        let e15_e1245 = a.e15 * a.e1245;
-        let e15_e1345 = a.e15 * a.e1345;
-        let e15_e2345 = a.e15 * a.e2345;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e24 = a.e23 * a.e24;
-        let e23_e25 = a.e23 * a.e25;
-        let e23_e34 = a.e23 * a.e34;
-        let e23_e35 = a.e23 * a.e35;
-        let e23_e45 = a.e23 * a.e45;
-        let e23_e1234 = a.e23 * a.e1234;
-        let e23_e1235 = a.e23 * a.e1235;
-        let e23_e1245 = a.e23 * a.e1245;
-        let e23_e1345 = a.e23 * a.e1345;
-        let e23_e2345 = a.e23 * a.e2345;
-        let e24_e24 = a.e24 * a.e24;
-        let e24_e25 = a.e24 * a.e25;
-        let e24_e34 = a.e24 * a.e34;
-        let e24_e35 = a.e24 * a.e35;
-        let e24_e45 = a.e24 * a.e45;
-        let e24_e1234 = a.e24 * a.e1234;
-        let e24_e1235 = a.e24 * a.e1235;
-        let e24_e1245 = a.e24 * a.e1245;
-        let e24_e1345 = a.e24 * a.e1345;
-        let e24_e2345 = a.e24 * a.e2345;
-        let e25_e25 = a.e25 * a.e25;
-        let e25_e34 = a.e25 * a.e34;
-        let e25_e35 = a.e25 * a.e35;
-        let e25_e45 = a.e25 * a.e45;
-        let e25_e1234 = a.e25 * a.e1234;
-        let e25_e1235 = a.e25 * a.e1235;
-        let e25_e1245 = a.e25 * a.e1245;
-        let e25_e1345 = a.e25 * a.e1345;
-        let e25_e2345 = a.e25 * a.e2345;
-        let e34_e34 = a.e34 * a.e34;
-        let e34_e35 = a.e34 * a.e35;
-        let e34_e45 = a.e34 * a.e45;
-        let e34_e1234 = a.e34 * a.e1234;
-        let e34_e1235 = a.e34 * a.e1235;
-        let e34_e1245 = a.e34 * a.e1245;
-        let e34_e1345 = a.e34 * a.e1345;
-        let e34_e2345 = a.e34 * a.e2345;
-        let e35_e35 = a.e35 * a.e35;
-        let e35_e45 = a.e35 * a.e45;
-        let e35_e1234 = a.e35 * a.e1234;
-        let e35_e1235 = a.e35 * a.e1235;
-        let e35_e1245 = a.e35 * a.e1245;
-        let e35_e1345 = a.e35 * a.e1345;
-        let e35_e2345 = a.e35 * a.e2345;
-        let e45_e45 = a.e45 * a.e45;
-        let e45_e1234 = a.e45 * a.e1234;
-        let e45_e1235 = a.e45 * a.e1235;
-        let e45_e1245 = a.e45 * a.e1245;
-        let e45_e1345 = a.e45 * a.e1345;
-        let e45_e2345 = a.e45 * a.e2345;
-        let e1234_e1234 = a.e1234 * a.e1234;
-        let e1234_e1235 = a.e1234 * a.e1235;
-        let e1234_e1245 = a.e1234 * a.e1245;
-        let e1234_e1345 = a.e1234 * a.e1345;
-        let e1234_e2345 = a.e1234 * a.e2345;
-        let e1235_e1235 = a.e1235 * a.e1235;
-        let e1235_e1245 = a.e1235 * a.e1245;
-        let e1235_e1345 = a.e1235 * a.e1345;
-        let e1235_e2345 = a.e1235 * a.e2345;
-        let e1245_e1245 = a.e1245 * a.e1245;
-        let e1245_e1345 = a.e1245 * a.e1345;
-        let e1245_e2345 = a.e1245 * a.e2345;
-        let e1345_e1345 = a.e1345 * a.e1345;
-        let e1345_e2345 = a.e1345 * a.e2345;
-        let e2345_e2345 = a.e2345 * a.e2345;
-        Bivector {
-            e12: (s_s + e12_e12 - e13_e13 - e14_e14 + e15_e15 - e23_e23 - e24_e24
-                + e25_e25
-                + e34_e34
-                - e35_e35
-                - e45_e45
-                + e1234_e1234
-                - e1235_e1235
-                - e1245_e1245
-                + e1345_e1345
-                + e2345_e2345)
-                * x.e12
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13) - (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    - (e24_e34 + e24_e34)
-                    + (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e13
-                + ((s_e24 + s_e24)
-                    + (e12_e14 + e12_e14)
-                    + (e13_e1234 + e13_e1234)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    + (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e14
-                + (-(s_e25 + s_e25)
-                    - (e12_e15 + e12_e15)
-                    - (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    - (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e15
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13) + (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e23
-                + ((e12_e24 + e12_e24)
-                    - (s_e14 + s_e14)
-                    - (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    + (e1235_e2345 + e1235_e2345))
-                    * x.e24
-                + ((s_e15 + s_e15) - (e12_e25 + e12_e25)
-                    + (e13_e35 + e13_e35)
-                    + (e14_e45 + e14_e45)
-                    - (e23_e1235 + e23_e1235)
-                    - (e24_e1245 + e24_e1245)
-                    + (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e25
-                + ((e12_e34 + e12_e34) - (s_e1234 + s_e1234) + (e13_e24 + e13_e24)
-                    - (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e34
-                + ((s_e1235 + s_e1235) - (e12_e35 + e12_e35) - (e13_e25 + e13_e25)
-                    + (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e35
-                + ((s_e1245 + s_e1245)
-                    - (e12_e45 + e12_e45)
-                    - (e13_e2345 + e13_e2345)
-                    - (e14_e25 + e14_e25)
-                    + (e15_e24 + e15_e24)
-                    + (e23_e1345 + e23_e1345)
-                    + (e34_e1235 + e34_e1235)
-                    - (e35_e1234 + e35_e1234))
-                    * x.e45,
-            e13: ((e12_e13 + e12_e13) - (s_e23 + s_e23) + (e14_e1234 + e14_e1234)
-                - (e15_e1235 + e15_e1235)
-                - (e24_e34 + e24_e34)
-                + (e25_e35 + e25_e35)
-                + (e45_e2345 + e45_e2345)
-                - (e1245_e1345 + e1245_e1345))
-                * x.e12
-                + (s_s - e12_e12 + e13_e13 - e14_e14 + e15_e15 - e23_e23 + e24_e24
-                    - e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    + e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e13
-                + ((s_e34 + s_e34) - (e12_e1234 + e12_e1234)
-                    + (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    + (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e14
-                + ((e12_e1235 + e12_e1235)
-                    - (s_e35 + s_e35)
-                    - (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e15
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23) - (e14_e24 + e14_e24)
-                    + (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e23
-                + ((s_e1234 + s_e1234)
-                    + (e12_e34 + e12_e34)
-                    + (e13_e24 + e13_e24)
-                    + (e14_e23 + e14_e23)
-                    + (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    + (e45_e1235 + e45_e1235))
-                    * x.e24
-                + (-(s_e1235 + s_e1235)
-                    - (e12_e35 + e12_e35)
-                    - (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    - (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    - (e45_e1234 + e45_e1234))
-                    * x.e25
-                + ((e13_e34 + e13_e34)
-                    - (s_e14 + s_e14)
-                    - (e12_e24 + e12_e24)
-                    - (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    + (e35_e1345 + e35_e1345)
-                    + (e1235_e2345 + e1235_e2345))
-                    * x.e34
-                + ((s_e15 + s_e15) + (e12_e25 + e12_e25) - (e13_e35 + e13_e35)
-                    + (e14_e45 + e14_e45)
-                    - (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e35
-                + ((s_e1345 + s_e1345) + (e12_e2345 + e12_e2345)
-                    - (e13_e45 + e13_e45)
-                    - (e14_e35 + e14_e35)
-                    + (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e45,
-            e14: ((e12_e14 + e12_e14)
-                - (s_e24 + s_e24)
-                - (e13_e1234 + e13_e1234)
-                - (e15_e1245 + e15_e1245)
-                + (e23_e34 + e23_e34)
-                + (e25_e45 + e25_e45)
-                - (e35_e2345 + e35_e2345)
-                + (e1235_e1345 + e1235_e1345))
-                * x.e12
-                + ((e12_e1234 + e12_e1234) - (s_e34 + s_e34) + (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    + (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e13
-                + (s_s - e12_e12 - e13_e13 + e14_e14 + e15_e15 + e23_e23
-                    - e24_e24
-                    - e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e14
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45) + (e13_e1345 + e13_e1345)
-                    - (e14_e15 + e14_e15)
-                    - (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e15
-                + ((e13_e24 + e13_e24) - (s_e1234 + s_e1234) - (e12_e34 + e12_e34)
-                    + (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    - (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    + (e45_e1235 + e45_e1235))
-                    * x.e23
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23)
-                    + (e14_e24 + e14_e24)
-                    + (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e24
-                + ((e13_e2345 + e13_e2345)
-                    - (s_e1245 + s_e1245)
-                    - (e12_e45 + e12_e45)
-                    - (e14_e25 + e14_e25)
-                    - (e15_e24 + e15_e24)
-                    + (e23_e1345 + e23_e1345)
-                    + (e34_e1235 + e34_e1235)
-                    + (e35_e1234 + e35_e1234))
-                    * x.e25
-                + ((s_e13 + s_e13)
-                    + (e12_e23 + e12_e23)
-                    + (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e34
-                + (-(s_e1345 + s_e1345)
-                    - (e12_e2345 + e12_e2345)
-                    - (e13_e45 + e13_e45)
-                    - (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    - (e25_e1234 + e25_e1234))
-                    * x.e35
-                + ((s_e15 + s_e15) + (e12_e25 + e12_e25) + (e13_e35 + e13_e35)
-                    - (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    - (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e45,
-            e15: ((e12_e15 + e12_e15)
-                - (s_e25 + s_e25)
-                - (e13_e1235 + e13_e1235)
-                - (e14_e1245 + e14_e1245)
-                + (e23_e35 + e23_e35)
-                + (e24_e45 + e24_e45)
-                - (e34_e2345 + e34_e2345)
-                + (e1234_e1345 + e1234_e1345))
-                * x.e12
-                + ((e12_e1235 + e12_e1235) - (s_e35 + s_e35) + (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    + (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e13
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45)
-                    + (e13_e1345 + e13_e1345)
-                    + (e14_e15 + e14_e15)
-                    - (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e14
-                + (s_s - e12_e12 - e13_e13 - e14_e14 - e15_e15
-                    + e23_e23
-                    + e24_e24
-                    + e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    - e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e15
-                + ((e13_e25 + e13_e25)
-                    - (s_e1235 + s_e1235)
-                    - (e12_e35 + e12_e35)
-                    - (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    + (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e23
-                + ((e13_e2345 + e13_e2345) - (s_e1245 + s_e1245) - (e12_e45 + e12_e45)
-                    + (e14_e25 + e14_e25)
-                    + (e15_e24 + e15_e24)
-                    + (e23_e1345 + e23_e1345)
-                    - (e34_e1235 + e34_e1235)
-                    - (e35_e1234 + e35_e1234))
-                    * x.e24
-                + ((s_e12 + s_e12)
-                    - (e13_e23 + e13_e23)
-                    - (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e25
-                + ((e14_e35 + e14_e35)
-                    - (s_e1345 + s_e1345)
-                    - (e12_e2345 + e12_e2345)
-                    - (e13_e45 + e13_e45)
-                    + (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    + (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e34
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23)
-                    - (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e35
-                + ((s_e14 + s_e14) + (e12_e24 + e12_e24) + (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e45,
-            e23: ((s_e13 + s_e13) + (e12_e23 + e12_e23) + (e14_e34 + e14_e34)
-                - (e15_e35 + e15_e35)
-                + (e24_e1234 + e24_e1234)
-                - (e25_e1235 + e25_e1235)
-                - (e45_e1345 + e45_e1345)
-                - (e1245_e2345 + e1245_e2345))
-                * x.e12
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12) - (e14_e24 + e14_e24)
-                    + (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e13
-                + ((e13_e24 + e13_e24) - (s_e1234 + s_e1234) - (e12_e34 + e12_e34)
-                    + (e14_e23 + e14_e23)
-                    + (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    - (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e14
-                + ((s_e1235 + s_e1235) + (e12_e35 + e12_e35)
-                    - (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    - (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    + (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e15
-                + (s_s - e12_e12 - e13_e13 + e14_e14 - e15_e15 + e23_e23 - e24_e24 + e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    + e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e23
-                + ((s_e34 + s_e34)
-                    - (e12_e1234 + e12_e1234)
-                    - (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    + (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e24
-                + ((e12_e1235 + e12_e1235) - (s_e35 + s_e35)
-                    + (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e25
-                + ((e12_e14 + e12_e14) - (s_e24 + s_e24) - (e13_e1234 + e13_e1234)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e34
-                + ((s_e25 + s_e25) - (e12_e15 + e12_e15) + (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    + (e1234_e1345 + e1234_e1345))
-                    * x.e35
-                + ((s_e2345 + s_e2345) - (e12_e1345 + e12_e1345)
-                    + (e13_e1245 + e13_e1245)
-                    + (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e45,
-            e24: ((s_e14 + s_e14) + (e12_e24 + e12_e24)
-                - (e13_e34 + e13_e34)
-                - (e15_e45 + e15_e45)
-                - (e23_e1234 + e23_e1234)
-                - (e25_e1245 + e25_e1245)
-                + (e35_e1345 + e35_e1345)
-                + (e1235_e2345 + e1235_e2345))
-                * x.e12
-                + ((s_e1234 + s_e1234)
-                    + (e12_e34 + e12_e34)
-                    + (e13_e24 + e13_e24)
-                    + (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    - (e25_e1345 + e25_e1345)
-                    - (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e13
-                + ((e14_e24 + e14_e24) - (s_e12 + s_e12) - (e13_e23 + e13_e23)
-                    + (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e14
-                + ((s_e1245 + s_e1245) + (e12_e45 + e12_e45) + (e13_e2345 + e13_e2345)
-                    - (e14_e25 + e14_e25)
-                    - (e15_e24 + e15_e24)
-                    + (e23_e1345 + e23_e1345)
-                    - (e34_e1235 + e34_e1235)
-                    - (e35_e1234 + e35_e1234))
-                    * x.e15
-                + ((e12_e1234 + e12_e1234) - (s_e34 + s_e34) - (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    + (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e23
-                + (s_s - e12_e12 + e13_e13 - e14_e14 - e15_e15 - e23_e23 + e24_e24 + e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e24
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45) - (e13_e1345 + e13_e1345)
-                    + (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e25
-                + ((s_e23 + s_e23)
-                    - (e12_e13 + e12_e13)
-                    - (e14_e1234 + e14_e1234)
-                    - (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    + (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e34
-                + ((e12_e1345 + e12_e1345) - (s_e2345 + s_e2345)
-                    + (e13_e1245 + e13_e1245)
-                    + (e14_e1235 + e14_e1235)
-                    + (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    - (e25_e34 + e25_e34))
-                    * x.e35
-                + ((s_e25 + s_e25) - (e12_e15 + e12_e15) - (e13_e1235 + e13_e1235)
-                    + (e14_e1245 + e14_e1245)
-                    + (e23_e35 + e23_e35)
-                    - (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    + (e1234_e1345 + e1234_e1345))
-                    * x.e45,
-            e25: ((s_e15 + s_e15) + (e12_e25 + e12_e25)
-                - (e13_e35 + e13_e35)
-                - (e14_e45 + e14_e45)
-                - (e23_e1235 + e23_e1235)
-                - (e24_e1245 + e24_e1245)
-                + (e34_e1345 + e34_e1345)
-                + (e1234_e2345 + e1234_e2345))
-                * x.e12
-                + ((s_e1235 + s_e1235) + (e12_e35 + e12_e35) + (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    - (e45_e1234 + e45_e1234))
-                    * x.e13
-                + ((s_e1245 + s_e1245)
-                    + (e12_e45 + e12_e45)
-                    + (e13_e2345 + e13_e2345)
-                    + (e14_e25 + e14_e25)
-                    + (e15_e24 + e15_e24)
-                    + (e23_e1345 + e23_e1345)
-                    + (e34_e1235 + e34_e1235)
-                    + (e35_e1234 + e35_e1234))
-                    * x.e14
-                + (-(s_e12 + s_e12)
-                    - (e13_e23 + e13_e23)
-                    - (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e15
-                + ((e12_e1235 + e12_e1235) - (s_e35 + s_e35) - (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    + (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e23
-                + ((e12_e1245 + e12_e1245)
-                    - (s_e45 + s_e45)
-                    - (e13_e1345 + e13_e1345)
-                    - (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e24
-                + (s_s - e12_e12 + e13_e13 + e14_e14 + e15_e15 - e23_e23 - e24_e24 - e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e25
-                + ((e12_e1345 + e12_e1345) - (s_e2345 + s_e2345) + (e13_e1245 + e13_e1245)
-                    - (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    + (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e34
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13)
-                    + (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    - (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e35
-                + ((s_e24 + s_e24) - (e12_e14 + e12_e14) - (e13_e1234 + e13_e1234)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    - (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e45,
-            e34: ((e12_e34 + e12_e34) - (s_e1234 + s_e1234) + (e13_e24 + e13_e24)
-                - (e14_e23 + e14_e23)
-                + (e15_e2345 + e15_e2345)
-                - (e25_e1345 + e25_e1345)
-                - (e35_e1245 + e35_e1245)
-                + (e45_e1235 + e45_e1235))
-                * x.e12
-                + ((s_e14 + s_e14) - (e12_e24 + e12_e24) + (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    - (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    + (e1235_e2345 + e1235_e2345))
-                    * x.e13
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13)
-                    + (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e14
-                + ((s_e1345 + s_e1345) - (e12_e2345 + e12_e2345) + (e13_e45 + e13_e45)
-                    - (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    + (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e15
-                + ((s_e24 + s_e24) + (e12_e14 + e12_e14) + (e13_e1234 + e13_e1234)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    - (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e23
-                + ((e14_e1234 + e14_e1234) - (s_e23 + s_e23) - (e12_e13 + e12_e13)
-                    + (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    + (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e24
-                + ((s_e2345 + s_e2345) + (e12_e1345 + e12_e1345) + (e13_e1245 + e13_e1245)
-                    - (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    + (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    - (e25_e34 + e25_e34))
-                    * x.e25
-                + (s_s + e12_e12 - e13_e13 - e14_e14 - e15_e15 - e23_e23 - e24_e24 - e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    - e2345_e2345)
-                    * x.e34
-                + ((e13_e1345 + e13_e1345) - (s_e45 + s_e45) - (e12_e1245 + e12_e1245)
-                    + (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e35
-                + ((s_e35 + s_e35) + (e12_e1235 + e12_e1235) - (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e45,
-            e35: ((e12_e35 + e12_e35) - (s_e1235 + s_e1235)
-                + (e13_e25 + e13_e25)
-                + (e14_e2345 + e14_e2345)
-                - (e15_e23 + e15_e23)
-                - (e24_e1345 + e24_e1345)
-                - (e34_e1245 + e34_e1245)
-                + (e45_e1234 + e45_e1234))
-                * x.e12
-                + ((s_e15 + s_e15) - (e12_e25 + e12_e25) + (e13_e35 + e13_e35)
-                    - (e14_e45 + e14_e45)
-                    - (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    + (e1234_e2345 + e1234_e2345))
-                    * x.e13
-                + ((s_e1345 + s_e1345) - (e12_e2345 + e12_e2345)
-                    + (e13_e45 + e13_e45)
-                    + (e14_e35 + e14_e35)
-                    + (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    - (e25_e1234 + e25_e1234))
-                    * x.e14
-                + ((e12_e23 + e12_e23)
-                    - (s_e13 + s_e13)
-                    - (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e15
-                + ((s_e25 + s_e25) + (e12_e15 + e12_e15) + (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    + (e23_e35 + e23_e35)
-                    - (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e23
-                + ((s_e2345 + s_e2345)
-                    + (e12_e1345 + e12_e1345)
-                    + (e13_e1245 + e13_e1245)
-                    + (e14_e1235 + e14_e1235)
-                    + (e15_e1234 + e15_e1234)
-                    + (e23_e45 + e23_e45)
-                    + (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e24
-                + (-(s_e23 + s_e23)
-                    - (e12_e13 + e12_e13)
-                    - (e14_e1234 + e14_e1234)
-                    - (e15_e1235 + e15_e1235)
-                    - (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e25
-                + ((e13_e1345 + e13_e1345)
-                    - (s_e45 + s_e45)
-                    - (e12_e1245 + e12_e1245)
-                    - (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e34
-                + (s_s + e12_e12 - e13_e13 + e14_e14 + e15_e15 - e23_e23 + e24_e24 + e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    - e2345_e2345)
-                    * x.e35
-                + ((s_e34 + s_e34) + (e12_e1234 + e12_e1234) - (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e45,
-            e45: ((e12_e45 + e12_e45) - (s_e1245 + s_e1245) - (e13_e2345 + e13_e2345)
-                + (e14_e25 + e14_e25)
-                - (e15_e24 + e15_e24)
-                + (e23_e1345 + e23_e1345)
-                + (e34_e1235 + e34_e1235)
-                - (e35_e1234 + e35_e1234))
-                * x.e12
-                + ((e12_e2345 + e12_e2345) - (s_e1345 + s_e1345)
-                    + (e13_e45 + e13_e45)
-                    + (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e13
-                + ((s_e15 + s_e15) - (e12_e25 + e12_e25) - (e13_e35 + e13_e35)
-                    + (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    - (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    + (e1234_e2345 + e1234_e2345))
-                    * x.e14
-                + ((e12_e24 + e12_e24) - (s_e14 + s_e14) + (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    - (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    + (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e15
-                + ((e13_e1245 + e13_e1245) - (s_e2345 + s_e2345) - (e12_e1345 + e12_e1345)
-                    + (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    + (e23_e45 + e23_e45)
-                    + (e24_e35 + e24_e35)
-                    - (e25_e34 + e25_e34))
-                    * x.e23
-                + ((s_e25 + s_e25) + (e12_e15 + e12_e15) - (e13_e1235 + e13_e1235)
-                    + (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e24
-                + ((e13_e1234 + e13_e1234)
-                    - (s_e24 + s_e24)
-                    - (e12_e14 + e12_e14)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e25
-                + ((s_e35 + s_e35)
-                    + (e12_e1235 + e12_e1235)
-                    + (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    + (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e34
-                + (-(s_e34 + s_e34)
-                    - (e12_e1234 + e12_e1234)
-                    - (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e35
-                + (s_s + e12_e12 + e13_e13 - e14_e14 + e15_e15 + e23_e23 - e24_e24 + e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    - e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    - e1345_e1345
-                    - e2345_e2345)
-                    * x.e45,
-        }
-    }
-}
-
-/// Sandwich `v x ṽ` of a Motor `v` and a Trivector `x` -> Trivector.
-impl<T: Scalar> Sandwich<Trivector<T>> for Motor<T> {
-    type Output = Trivector<T>;
-    #[inline]
-    fn sandwich(self, x: Trivector<T>) -> Trivector<T> {
-        let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e13 = a.s * a.e13;
-        let s_e14 = a.s * a.e14;
-        let s_e15 = a.s * a.e15;
-        let s_e23 = a.s * a.e23;
-        let s_e24 = a.s * a.e24;
-        let s_e25 = a.s * a.e25;
-        let s_e34 = a.s * a.e34;
-        let s_e35 = a.s * a.e35;
-        let s_e45 = a.s * a.e45;
-        let s_e1234 = a.s * a.e1234;
-        let s_e1235 = a.s * a.e1235;
-        let s_e1245 = a.s * a.e1245;
-        let s_e1345 = a.s * a.e1345;
-        let s_e2345 = a.s * a.e2345;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e13 = a.e12 * a.e13;
-        let e12_e14 = a.e12 * a.e14;
-        let e12_e15 = a.e12 * a.e15;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e24 = a.e12 * a.e24;
-        let e12_e25 = a.e12 * a.e25;
-        let e12_e34 = a.e12 * a.e34;
-        let e12_e35 = a.e12 * a.e35;
-        let e12_e45 = a.e12 * a.e45;
-        let e12_e1234 = a.e12 * a.e1234;
-        let e12_e1235 = a.e12 * a.e1235;
-        let e12_e1245 = a.e12 * a.e1245;
-        let e12_e1345 = a.e12 * a.e1345;
-        let e12_e2345 = a.e12 * a.e2345;
-        let e13_e13 = a.e13 * a.e13;
-        let e13_e14 = a.e13 * a.e14;
-        let e13_e15 = a.e13 * a.e15;
-        let e13_e23 = a.e13 * a.e23;
-        let e13_e24 = a.e13 * a.e24;
-        let e13_e25 = a.e13 * a.e25;
-        let e13_e34 = a.e13 * a.e34;
-        let e13_e35 = a.e13 * a.e35;
-        let e13_e45 = a.e13 * a.e45;
-        let e13_e1234 = a.e13 * a.e1234;
-        let e13_e1235 = a.e13 * a.e1235;
-        let e13_e1245 = a.e13 * a.e1245;
-        let e13_e1345 = a.e13 * a.e1345;
-        let e13_e2345 = a.e13 * a.e2345;
-        let e14_e14 = a.e14 * a.e14;
-        let e14_e15 = a.e14 * a.e15;
-        let e14_e23 = a.e14 * a.e23;
-        let e14_e24 = a.e14 * a.e24;
-        let e14_e25 = a.e14 * a.e25;
-        let e14_e34 = a.e14 * a.e34;
-        let e14_e35 = a.e14 * a.e35;
-        let e14_e45 = a.e14 * a.e45;
-        let e14_e1234 = a.e14 * a.e1234;
-        let e14_e1235 = a.e14 * a.e1235;
-        let e14_e1245 = a.e14 * a.e1245;
-        let e14_e1345 = a.e14 * a.e1345;
-        let e14_e2345 = a.e14 * a.e2345;
-        let e15_e15 = a.e15 * a.e15;
-        let e15_e23 = a.e15 * a.e23;
-        let e15_e24 = a.e15 * a.e24;
-        let e15_e25 = a.e15 * a.e25;
-        let e15_e34 = a.e15 * a.e34;
-        let e15_e35 = a.e15 * a.e35;
-        let e15_e45 = a.e15 * a.e45;
-        let e15_e1234 = a.e15 * a.e1234;
-        let e15_e1235 = a.e15 * a.e1235;
-        let e15_e1245 = a.e15 * a.e1245;
-        let e15_e1345 = a.e15 * a.e1345;
-        let e15_e2345 = a.e15 * a.e2345;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e24 = a.e23 * a.e24;
-        let e23_e25 = a.e23 * a.e25;
-        let e23_e34 = a.e23 * a.e34;
-        let e23_e35 = a.e23 * a.e35;
-        let e23_e45 = a.e23 * a.e45;
-        let e23_e1234 = a.e23 * a.e1234;
-        let e23_e1235 = a.e23 * a.e1235;
-        let e23_e1245 = a.e23 * a.e1245;
-        let e23_e1345 = a.e23 * a.e1345;
-        let e23_e2345 = a.e23 * a.e2345;
-        let e24_e24 = a.e24 * a.e24;
-        let e24_e25 = a.e24 * a.e25;
-        let e24_e34 = a.e24 * a.e34;
-        let e24_e35 = a.e24 * a.e35;
-        let e24_e45 = a.e24 * a.e45;
-        let e24_e1234 = a.e24 * a.e1234;
-        let e24_e1235 = a.e24 * a.e1235;
-        let e24_e1245 = a.e24 * a.e1245;
-        let e24_e1345 = a.e24 * a.e1345;
-        let e24_e2345 = a.e24 * a.e2345;
-        let e25_e25 = a.e25 * a.e25;
-        let e25_e34 = a.e25 * a.e34;
-        let e25_e35 = a.e25 * a.e35;
-        let e25_e45 = a.e25 * a.e45;
-        let e25_e1234 = a.e25 * a.e1234;
-        let e25_e1235 = a.e25 * a.e1235;
-        let e25_e1245 = a.e25 * a.e1245;
-        let e25_e1345 = a.e25 * a.e1345;
-        let e25_e2345 = a.e25 * a.e2345;
-        let e34_e34 = a.e34 * a.e34;
-        let e34_e35 = a.e34 * a.e35;
-        let e34_e45 = a.e34 * a.e45;
-        let e34_e1234 = a.e34 * a.e1234;
-        let e34_e1235 = a.e34 * a.e1235;
-        let e34_e1245 = a.e34 * a.e1245;
-        let e34_e1345 = a.e34 * a.e1345;
-        let e34_e2345 = a.e34 * a.e2345;
-        let e35_e35 = a.e35 * a.e35;
-        let e35_e45 = a.e35 * a.e45;
-        let e35_e1234 = a.e35 * a.e1234;
-        let e35_e1235 = a.e35 * a.e1235;
-        let e35_e1245 = a.e35 * a.e1245;
-        let e35_e1345 = a.e35 * a.e1345;
-        let e35_e2345 = a.e35 * a.e2345;
-        let e45_e45 = a.e45 * a.e45;
-        let e45_e1234 = a.e45 * a.e1234;
-        let e45_e1235 = a.e45 * a.e1235;
-        let e45_e1245 = a.e45 * a.e1245;
-        let e45_e1345 = a.e45 * a.e1345;
-        let e45_e2345 = a.e45 * a.e2345;
-        let e1234_e1234 = a.e1234 * a.e1234;
-        let e1234_e1235 = a.e1234 * a.e1235;
-        let e1234_e1245 = a.e1234 * a.e1245;
-        let e1234_e1345 = a.e1234 * a.e1345;
-        let e1234_e2345 = a.e1234 * a.e2345;
-        let e1235_e1235 = a.e1235 * a.e1235;
-        let e1235_e1245 = a.e1235 * a.e1245;
-        let e1235_e1345 = a.e1235 * a.e1345;
-        let e1235_e2345 = a.e1235 * a.e2345;
-        let e1245_e1245 = a.e1245 * a.e1245;
-        let e1245_e1345 = a.e1245 * a.e1345;
-        let e1245_e2345 = a.e1245 * a.e2345;
-        let e1345_e1345 = a.e1345 * a.e1345;
-        let e1345_e2345 = a.e1345 * a.e2345;
-        let e2345_e2345 = a.e2345 * a.e2345;
-        Trivector {
-            e123: (s_s + e12_e12 + e13_e13 - e14_e14 + e15_e15 + e23_e23 - e24_e24 + e25_e25
-                - e34_e34
-                + e35_e35
-                - e45_e45
-                - e1234_e1234
-                + e1235_e1235
-                - e1245_e1245
-                - e1345_e1345
-                - e2345_e2345)
-                * x.e123
-                + ((s_e34 + s_e34)
-                    + (e12_e1234 + e12_e1234)
-                    + (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    + (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e124
-                + (-(s_e35 + s_e35)
-                    - (e12_e1235 + e12_e1235)
-                    - (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e125
-                + ((e13_e1234 + e13_e1234)
-                    - (s_e24 + s_e24)
-                    - (e12_e14 + e12_e14)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e134
-                + ((s_e25 + s_e25) + (e12_e15 + e12_e15) - (e13_e1235 + e13_e1235)
-                    + (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e135
-                + ((s_e2345 + s_e2345) + (e12_e1345 + e12_e1345)
-                    - (e13_e1245 + e13_e1245)
-                    - (e14_e1235 + e14_e1235)
-                    + (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e145
-                + ((s_e14 + s_e14) - (e12_e24 + e12_e24) - (e13_e34 + e13_e34)
-                    + (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    + (e1235_e2345 + e1235_e2345))
-                    * x.e234
-                + ((e12_e25 + e12_e25) - (s_e15 + s_e15) + (e13_e35 + e13_e35)
-                    - (e14_e45 + e14_e45)
-                    - (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    + (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e235
-                + ((e12_e2345 + e12_e2345) - (s_e1345 + s_e1345)
-                    + (e13_e45 + e13_e45)
-                    + (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e245
-                + ((s_e1245 + s_e1245) - (e12_e45 + e12_e45) + (e13_e2345 + e13_e2345)
-                    - (e14_e25 + e14_e25)
-                    + (e15_e24 + e15_e24)
-                    - (e23_e1345 + e23_e1345)
-                    - (e34_e1235 + e34_e1235)
-                    + (e35_e1234 + e35_e1234))
-                    * x.e345,
-            e124: ((e13_e14 + e13_e14)
-                - (s_e34 + s_e34)
-                - (e12_e1234 + e12_e1234)
-                - (e15_e1345 + e15_e1345)
-                + (e23_e24 + e23_e24)
-                - (e25_e2345 + e25_e2345)
-                + (e35_e45 + e35_e45)
-                + (e1235_e1245 + e1235_e1245))
-                * x.e123
-                + (s_s + e12_e12 - e13_e13 + e14_e14 + e15_e15 - e23_e23 + e24_e24 + e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    - e2345_e2345)
-                    * x.e124
-                + ((e13_e1345 + e13_e1345)
-                    - (s_e45 + s_e45)
-                    - (e12_e1245 + e12_e1245)
-                    - (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e125
-                + ((s_e23 + s_e23)
-                    + (e12_e13 + e12_e13)
-                    + (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    + (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e134
-                + (-(s_e2345 + s_e2345)
-                    - (e12_e1345 + e12_e1345)
-                    - (e13_e1245 + e13_e1245)
-                    - (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    - (e25_e34 + e25_e34))
-                    * x.e135
-                + ((s_e25 + s_e25) + (e12_e15 + e12_e15) + (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    + (e23_e35 + e23_e35)
-                    - (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e145
-                + ((e12_e23 + e12_e23)
-                    - (s_e13 + s_e13)
-                    - (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e234
-                + ((s_e1345 + s_e1345) - (e12_e2345 + e12_e2345)
-                    + (e13_e45 + e13_e45)
-                    + (e14_e35 + e14_e35)
-                    + (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    - (e25_e1234 + e25_e1234))
-                    * x.e235
-                + ((e12_e25 + e12_e25) - (s_e15 + s_e15) - (e13_e35 + e13_e35)
-                    + (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    - (e24_e1245 + e24_e1245)
-                    + (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e245
-                + ((e12_e35 + e12_e35) - (s_e1235 + s_e1235)
-                    + (e13_e25 + e13_e25)
-                    + (e14_e2345 + e14_e2345)
-                    - (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e345,
-            e125: ((e13_e15 + e13_e15)
-                - (s_e35 + s_e35)
-                - (e12_e1235 + e12_e1235)
-                - (e14_e1345 + e14_e1345)
-                + (e23_e25 + e23_e25)
-                - (e24_e2345 + e24_e2345)
-                + (e34_e45 + e34_e45)
-                + (e1234_e1245 + e1234_e1245))
-                * x.e123
-                + ((e13_e1345 + e13_e1345) - (s_e45 + s_e45) - (e12_e1245 + e12_e1245)
-                    + (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e124
-                + (s_s + e12_e12 - e13_e13 - e14_e14 - e15_e15 - e23_e23 - e24_e24 - e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    - e2345_e2345)
-                    * x.e125
-                + ((e14_e1235 + e14_e1235)
-                    - (s_e2345 + s_e2345)
-                    - (e12_e1345 + e12_e1345)
-                    - (e13_e1245 + e13_e1245)
-                    + (e15_e1234 + e15_e1234)
-                    - (e23_e45 + e23_e45)
-                    + (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e134
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13)
-                    - (e14_e1234 + e14_e1234)
-                    - (e15_e1235 + e15_e1235)
-                    - (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e135
-                + ((s_e24 + s_e24) + (e12_e14 + e12_e14) + (e13_e1234 + e13_e1234)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    - (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e145
-                + ((s_e1345 + s_e1345) - (e12_e2345 + e12_e2345) + (e13_e45 + e13_e45)
-                    - (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    + (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e234
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13)
-                    + (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e235
-                + ((e12_e24 + e12_e24) - (s_e14 + s_e14) - (e13_e34 + e13_e34)
-                    + (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    + (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e245
-                + ((e12_e34 + e12_e34) - (s_e1234 + s_e1234) + (e13_e24 + e13_e24)
-                    - (e14_e23 + e14_e23)
-                    + (e15_e2345 + e15_e2345)
-                    - (e25_e1345 + e25_e1345)
-                    - (e35_e1245 + e35_e1245)
-                    + (e45_e1235 + e45_e1235))
-                    * x.e345,
-            e134: ((s_e24 + s_e24) - (e12_e14 + e12_e14) - (e13_e1234 + e13_e1234)
-                + (e15_e1245 + e15_e1245)
-                + (e23_e34 + e23_e34)
-                - (e25_e45 + e25_e45)
-                - (e35_e2345 + e35_e2345)
-                + (e1235_e1345 + e1235_e1345))
-                * x.e123
-                + ((e12_e13 + e12_e13)
-                    - (s_e23 + s_e23)
-                    - (e14_e1234 + e14_e1234)
-                    - (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    + (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e124
-                + ((s_e2345 + s_e2345) - (e12_e1345 + e12_e1345) - (e13_e1245 + e13_e1245)
-                    + (e14_e1235 + e14_e1235)
-                    + (e15_e1234 + e15_e1234)
-                    + (e23_e45 + e23_e45)
-                    - (e24_e35 + e24_e35)
-                    - (e25_e34 + e25_e34))
-                    * x.e125
-                + (s_s - e12_e12 + e13_e13 + e14_e14 + e15_e15 - e23_e23 - e24_e24 - e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e134
-                + ((e12_e1245 + e12_e1245)
-                    - (s_e45 + s_e45)
-                    - (e13_e1345 + e13_e1345)
-                    - (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e135
-                + ((s_e35 + s_e35) - (e12_e1235 + e12_e1235) + (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e145
-                + ((s_e12 + s_e12)
-                    + (e13_e23 + e13_e23)
-                    + (e14_e24 + e14_e24)
-                    + (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e234
-                + (-(s_e1245 + s_e1245)
-                    - (e12_e45 + e12_e45)
-                    - (e13_e2345 + e13_e2345)
-                    - (e14_e25 + e14_e25)
-                    - (e15_e24 + e15_e24)
-                    - (e23_e1345 + e23_e1345)
-                    - (e34_e1235 + e34_e1235)
-                    - (e35_e1234 + e35_e1234))
-                    * x.e235
-                + ((s_e1235 + s_e1235) + (e12_e35 + e12_e35) + (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    - (e45_e1234 + e45_e1234))
-                    * x.e245
-                + ((e13_e35 + e13_e35) - (s_e15 + s_e15) - (e12_e25 + e12_e25)
-                    + (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e345,
-            e135: ((s_e25 + s_e25) - (e12_e15 + e12_e15) - (e13_e1235 + e13_e1235)
-                + (e14_e1245 + e14_e1245)
-                + (e23_e35 + e23_e35)
-                - (e24_e45 + e24_e45)
-                - (e34_e2345 + e34_e2345)
-                + (e1234_e1345 + e1234_e1345))
-                * x.e123
-                + ((s_e2345 + s_e2345)
-                    - (e12_e1345 + e12_e1345)
-                    - (e13_e1245 + e13_e1245)
-                    - (e14_e1235 + e14_e1235)
-                    - (e15_e1234 + e15_e1234)
-                    + (e23_e45 + e23_e45)
-                    + (e24_e35 + e24_e35)
-                    + (e25_e34 + e25_e34))
-                    * x.e124
-                + ((e12_e13 + e12_e13) - (s_e23 + s_e23)
-                    + (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    - (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e125
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45) - (e13_e1345 + e13_e1345)
-                    + (e14_e15 + e14_e15)
-                    + (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e134
-                + (s_s - e12_e12 + e13_e13 - e14_e14 - e15_e15 - e23_e23 + e24_e24 + e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e135
-                + ((s_e34 + s_e34) - (e12_e1234 + e12_e1234) + (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e145
-                + ((e14_e25 + e14_e25)
-                    - (s_e1245 + s_e1245)
-                    - (e12_e45 + e12_e45)
-                    - (e13_e2345 + e13_e2345)
-                    + (e15_e24 + e15_e24)
-                    - (e23_e1345 + e23_e1345)
-                    + (e34_e1235 + e34_e1235)
-                    + (e35_e1234 + e35_e1234))
-                    * x.e234
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23)
-                    - (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e235
-                + ((s_e1234 + s_e1234)
-                    + (e12_e34 + e12_e34)
-                    + (e13_e24 + e13_e24)
-                    + (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    - (e25_e1345 + e25_e1345)
-                    - (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e245
-                + ((e13_e34 + e13_e34) - (s_e14 + s_e14) - (e12_e24 + e12_e24)
-                    + (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e345,
-            e145: ((e12_e1345 + e12_e1345)
-                - (s_e2345 + s_e2345)
-                - (e13_e1245 + e13_e1245)
-                - (e14_e1235 + e14_e1235)
-                + (e15_e1234 + e15_e1234)
-                + (e23_e45 + e23_e45)
-                + (e24_e35 + e24_e35)
-                - (e25_e34 + e25_e34))
-                * x.e123
-                + ((s_e25 + s_e25) - (e12_e15 + e12_e15) + (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    + (e1234_e1345 + e1234_e1345))
-                    * x.e124
-                + ((e12_e14 + e12_e14) - (s_e24 + s_e24) - (e13_e1234 + e13_e1234)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    - (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e125
-                + ((s_e35 + s_e35)
-                    - (e12_e1235 + e12_e1235)
-                    - (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    + (e24_e2345 + e24_e2345)
-                    + (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e134
-                + ((e12_e1234 + e12_e1234) - (s_e34 + s_e34)
-                    + (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    - (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e135
-                + (s_s - e12_e12 - e13_e13 + e14_e14 - e15_e15 + e23_e23 - e24_e24 + e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    + e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e145
-                + ((s_e1235 + s_e1235) + (e12_e35 + e12_e35)
-                    - (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    - (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    + (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e234
-                + ((e13_e24 + e13_e24) - (s_e1234 + s_e1234) - (e12_e34 + e12_e34)
-                    + (e14_e23 + e14_e23)
-                    + (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    - (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e235
-                + ((s_e12 + s_e12) - (e13_e23 + e13_e23) + (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e245
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23) + (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e345,
-            e234: ((e15_e45 + e15_e45)
-                - (s_e14 + s_e14)
-                - (e12_e24 + e12_e24)
-                - (e13_e34 + e13_e34)
-                - (e23_e1234 + e23_e1234)
-                + (e25_e1245 + e25_e1245)
-                + (e35_e1345 + e35_e1345)
-                + (e1235_e2345 + e1235_e2345))
-                * x.e123
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23)
-                    - (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e124
-                + ((e14_e35 + e14_e35)
-                    - (s_e1345 + s_e1345)
-                    - (e12_e2345 + e12_e2345)
-                    - (e13_e45 + e13_e45)
-                    + (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    + (e24_e1235 + e24_e1235)
-                    + (e25_e1234 + e25_e1234))
-                    * x.e125
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12)
-                    + (e14_e24 + e14_e24)
-                    + (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e134
-                + ((s_e1245 + s_e1245) + (e12_e45 + e12_e45)
-                    - (e13_e2345 + e13_e2345)
-                    - (e14_e25 + e14_e25)
-                    - (e15_e24 + e15_e24)
-                    - (e23_e1345 + e23_e1345)
-                    + (e34_e1235 + e34_e1235)
-                    + (e35_e1234 + e35_e1234))
-                    * x.e135
-                + ((e13_e25 + e13_e25)
-                    - (s_e1235 + s_e1235)
-                    - (e12_e35 + e12_e35)
-                    - (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    + (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e145
-                + (s_s - e12_e12 - e13_e13 - e14_e14 - e15_e15
-                    + e23_e23
-                    + e24_e24
-                    + e25_e25
-                    + e34_e34
-                    + e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    - e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e234
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45)
-                    + (e13_e1345 + e13_e1345)
-                    + (e14_e15 + e14_e15)
-                    - (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    + (e1234_e1235 + e1234_e1235))
-                    * x.e235
-                + ((s_e35 + s_e35) - (e12_e1235 + e12_e1235) - (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    + (e1234_e1245 + e1234_e1245))
-                    * x.e245
-                + ((e12_e15 + e12_e15)
-                    - (s_e25 + s_e25)
-                    - (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    + (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    + (e1234_e1345 + e1234_e1345))
-                    * x.e345,
-            e235: ((e14_e45 + e14_e45)
-                - (s_e15 + s_e15)
-                - (e12_e25 + e12_e25)
-                - (e13_e35 + e13_e35)
-                - (e23_e1235 + e23_e1235)
-                + (e24_e1245 + e24_e1245)
-                + (e34_e1345 + e34_e1345)
-                + (e1234_e2345 + e1234_e2345))
-                * x.e123
-                + (-(s_e1345 + s_e1345)
-                    - (e12_e2345 + e12_e2345)
-                    - (e13_e45 + e13_e45)
-                    - (e14_e35 + e14_e35)
-                    - (e15_e34 + e15_e34)
-                    - (e23_e1245 + e23_e1245)
-                    - (e24_e1235 + e24_e1235)
-                    - (e25_e1234 + e25_e1234))
-                    * x.e124
-                + ((s_e13 + s_e13)
-                    + (e12_e23 + e12_e23)
-                    + (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    + (e1245_e2345 + e1245_e2345))
-                    * x.e125
-                + ((s_e1245 + s_e1245) + (e12_e45 + e12_e45) - (e13_e2345 + e13_e2345)
-                    + (e14_e25 + e14_e25)
-                    + (e15_e24 + e15_e24)
-                    - (e23_e1345 + e23_e1345)
-                    - (e34_e1235 + e34_e1235)
-                    - (e35_e1234 + e35_e1234))
-                    * x.e134
-                + ((e13_e23 + e13_e23)
-                    - (s_e12 + s_e12)
-                    - (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e135
-                + ((e13_e24 + e13_e24) - (s_e1234 + s_e1234) - (e12_e34 + e12_e34)
-                    + (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    - (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    + (e45_e1235 + e45_e1235))
-                    * x.e145
-                + ((e12_e1245 + e12_e1245) - (s_e45 + s_e45) + (e13_e1345 + e13_e1345)
-                    - (e14_e15 + e14_e15)
-                    - (e23_e2345 + e23_e2345)
-                    + (e24_e25 + e24_e25)
-                    + (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e234
-                + (s_s - e12_e12 - e13_e13 + e14_e14 + e15_e15 + e23_e23
-                    - e24_e24
-                    - e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    + e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e235
-                + ((s_e34 + s_e34) - (e12_e1234 + e12_e1234) - (e13_e14 + e13_e14)
-                    + (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e245
-                + ((e12_e14 + e12_e14)
-                    - (s_e24 + s_e24)
-                    - (e13_e1234 + e13_e1234)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    + (e25_e45 + e25_e45)
-                    - (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e345,
-            e245: ((s_e1345 + s_e1345) + (e12_e2345 + e12_e2345)
-                - (e13_e45 + e13_e45)
-                - (e14_e35 + e14_e35)
-                + (e15_e34 + e15_e34)
-                - (e23_e1245 + e23_e1245)
-                - (e24_e1235 + e24_e1235)
-                + (e25_e1234 + e25_e1234))
-                * x.e123
-                + ((e13_e35 + e13_e35)
-                    - (s_e15 + s_e15)
-                    - (e12_e25 + e12_e25)
-                    - (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    - (e24_e1245 + e24_e1245)
-                    + (e34_e1345 + e34_e1345)
-                    + (e1234_e2345 + e1234_e2345))
-                    * x.e124
-                + ((s_e14 + s_e14) + (e12_e24 + e12_e24) - (e13_e34 + e13_e34)
-                    + (e15_e45 + e15_e45)
-                    - (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e125
-                + (-(s_e1235 + s_e1235)
-                    - (e12_e35 + e12_e35)
-                    - (e13_e25 + e13_e25)
-                    - (e14_e2345 + e14_e2345)
-                    - (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    - (e45_e1234 + e45_e1234))
-                    * x.e134
-                + ((s_e1234 + s_e1234)
-                    + (e12_e34 + e12_e34)
-                    + (e13_e24 + e13_e24)
-                    + (e14_e23 + e14_e23)
-                    + (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    + (e45_e1235 + e45_e1235))
-                    * x.e135
-                + ((e14_e24 + e14_e24)
-                    - (s_e12 + s_e12)
-                    - (e13_e23 + e13_e23)
-                    - (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    + (e1345_e2345 + e1345_e2345))
-                    * x.e145
-                + ((s_e35 + s_e35) - (e12_e1235 + e12_e1235)
-                    + (e13_e15 + e13_e15)
-                    + (e14_e1345 + e14_e1345)
-                    - (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    + (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e234
-                + ((e12_e1234 + e12_e1234)
-                    - (s_e34 + s_e34)
-                    - (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    + (e1235_e1245 + e1235_e1245))
-                    * x.e235
-                + (s_s - e12_e12 + e13_e13 - e14_e14 + e15_e15 - e23_e23 + e24_e24
-                    - e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    + e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e245
-                + ((s_e23 + s_e23) - (e12_e13 + e12_e13) - (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e345,
-            e345: ((e12_e45 + e12_e45) - (s_e1245 + s_e1245)
-                + (e13_e2345 + e13_e2345)
-                + (e14_e25 + e14_e25)
-                - (e15_e24 + e15_e24)
-                - (e23_e1345 + e23_e1345)
-                - (e34_e1235 + e34_e1235)
-                + (e35_e1234 + e35_e1234))
-                * x.e123
-                + ((s_e1235 + s_e1235) - (e12_e35 + e12_e35) - (e13_e25 + e13_e25)
-                    + (e14_e2345 + e14_e2345)
-                    + (e15_e23 + e15_e23)
-                    - (e24_e1345 + e24_e1345)
-                    - (e34_e1245 + e34_e1245)
-                    + (e45_e1234 + e45_e1234))
-                    * x.e124
-                + ((e12_e34 + e12_e34) - (s_e1234 + s_e1234) + (e13_e24 + e13_e24)
-                    - (e14_e23 + e14_e23)
-                    - (e15_e2345 + e15_e2345)
-                    + (e25_e1345 + e25_e1345)
-                    + (e35_e1245 + e35_e1245)
-                    - (e45_e1235 + e45_e1235))
-                    * x.e125
-                + ((e12_e25 + e12_e25)
-                    - (s_e15 + s_e15)
-                    - (e13_e35 + e13_e35)
-                    - (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    - (e34_e1345 + e34_e1345)
-                    + (e1234_e2345 + e1234_e2345))
-                    * x.e134
-                + ((s_e14 + s_e14) - (e12_e24 + e12_e24)
-                    + (e13_e34 + e13_e34)
-                    + (e15_e45 + e15_e45)
-                    - (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    + (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e135
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13) + (e14_e34 + e14_e34)
-                    - (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e145
-                + (-(s_e25 + s_e25)
-                    - (e12_e15 + e12_e15)
-                    - (e13_e1235 + e13_e1235)
-                    - (e14_e1245 + e14_e1245)
-                    - (e23_e35 + e23_e35)
-                    - (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e234
-                + ((s_e24 + s_e24)
-                    + (e12_e14 + e12_e14)
-                    + (e13_e1234 + e13_e1234)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    + (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    + (e1235_e1345 + e1235_e1345))
-                    * x.e235
-                + ((e14_e1234 + e14_e1234)
-                    - (s_e23 + s_e23)
-                    - (e12_e13 + e12_e13)
-                    - (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    + (e1245_e1345 + e1245_e1345))
-                    * x.e245
-                + (s_s + e12_e12 - e13_e13 - e14_e14 + e15_e15 - e23_e23 - e24_e24
-                    + e25_e25
-                    + e34_e34
-                    - e35_e35
-                    - e45_e45
-                    + e1234_e1234
-                    - e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    + e2345_e2345)
-                    * x.e345,
-        }
-    }
-}
-
-/// Sandwich `v x ṽ` of a Motor `v` and a Quadvector `x` -> Quadvector.
-impl<T: Scalar> Sandwich<Quadvector<T>> for Motor<T> {
-    type Output = Quadvector<T>;
-    #[inline]
-    fn sandwich(self, x: Quadvector<T>) -> Quadvector<T> {
-        let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e13 = a.s * a.e13;
-        let s_e14 = a.s * a.e14;
-        let s_e15 = a.s * a.e15;
-        let s_e23 = a.s * a.e23;
-        let s_e24 = a.s * a.e24;
-        let s_e25 = a.s * a.e25;
-        let s_e34 = a.s * a.e34;
-        let s_e35 = a.s * a.e35;
-        let s_e45 = a.s * a.e45;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e13 = a.e12 * a.e13;
-        let e12_e14 = a.e12 * a.e14;
-        let e12_e15 = a.e12 * a.e15;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e24 = a.e12 * a.e24;
-        let e12_e25 = a.e12 * a.e25;
-        let e12_e1234 = a.e12 * a.e1234;
-        let e12_e1235 = a.e12 * a.e1235;
-        let e12_e1245 = a.e12 * a.e1245;
-        let e13_e13 = a.e13 * a.e13;
-        let e13_e14 = a.e13 * a.e14;
-        let e13_e15 = a.e13 * a.e15;
-        let e13_e23 = a.e13 * a.e23;
-        let e13_e34 = a.e13 * a.e34;
-        let e13_e35 = a.e13 * a.e35;
-        let e13_e1234 = a.e13 * a.e1234;
-        let e13_e1235 = a.e13 * a.e1235;
-        let e13_e1345 = a.e13 * a.e1345;
-        let e14_e14 = a.e14 * a.e14;
-        let e14_e15 = a.e14 * a.e15;
-        let e14_e24 = a.e14 * a.e24;
-        let e14_e34 = a.e14 * a.e34;
-        let e14_e45 = a.e14 * a.e45;
-        let e14_e1234 = a.e14 * a.e1234;
-        let e14_e1245 = a.e14 * a.e1245;
-        let e14_e1345 = a.e14 * a.e1345;
-        let e15_e15 = a.e15 * a.e15;
-        let e15_e25 = a.e15 * a.e25;
-        let e15_e35 = a.e15 * a.e35;
-        let e15_e45 = a.e15 * a.e45;
-        let e15_e1235 = a.e15 * a.e1235;
-        let e15_e1245 = a.e15 * a.e1245;
-        let e15_e1345 = a.e15 * a.e1345;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e24 = a.e23 * a.e24;
-        let e23_e25 = a.e23 * a.e25;
-        let e23_e34 = a.e23 * a.e34;
-        let e23_e35 = a.e23 * a.e35;
-        let e23_e1234 = a.e23 * a.e1234;
-        let e23_e1235 = a.e23 * a.e1235;
-        let e23_e2345 = a.e23 * a.e2345;
-        let e24_e24 = a.e24 * a.e24;
-        let e24_e25 = a.e24 * a.e25;
-        let e24_e34 = a.e24 * a.e34;
-        let e24_e45 = a.e24 * a.e45;
-        let e24_e1234 = a.e24 * a.e1234;
-        let e24_e1245 = a.e24 * a.e1245;
-        let e24_e2345 = a.e24 * a.e2345;
-        let e25_e25 = a.e25 * a.e25;
-        let e25_e35 = a.e25 * a.e35;
-        let e25_e45 = a.e25 * a.e45;
-        let e25_e1235 = a.e25 * a.e1235;
-        let e25_e1245 = a.e25 * a.e1245;
-        let e25_e2345 = a.e25 * a.e2345;
-        let e34_e34 = a.e34 * a.e34;
-        let e34_e35 = a.e34 * a.e35;
-        let e34_e45 = a.e34 * a.e45;
-        let e34_e1234 = a.e34 * a.e1234;
-        let e34_e1345 = a.e34 * a.e1345;
-        let e34_e2345 = a.e34 * a.e2345;
-        let e35_e35 = a.e35 * a.e35;
-        let e35_e45 = a.e35 * a.e45;
-        let e35_e1235 = a.e35 * a.e1235;
-        let e35_e1345 = a.e35 * a.e1345;
-        let e35_e2345 = a.e35 * a.e2345;
-        let e45_e45 = a.e45 * a.e45;
-        let e45_e1245 = a.e45 * a.e1245;
-        let e45_e1345 = a.e45 * a.e1345;
-        let e45_e2345 = a.e45 * a.e2345;
-        let e1234_e1234 = a.e1234 * a.e1234;
-        let e1234_e1235 = a.e1234 * a.e1235;
-        let e1234_e1245 = a.e1234 * a.e1245;
-        let e1234_e1345 = a.e1234 * a.e1345;
-        let e1234_e2345 = a.e1234 * a.e2345;
-        let e1235_e1235 = a.e1235 * a.e1235;
-        let e1235_e1245 = a.e1235 * a.e1245;
-        let e1235_e1345 = a.e1235 * a.e1345;
-        let e1235_e2345 = a.e1235 * a.e2345;
-        let e1245_e1245 = a.e1245 * a.e1245;
-        let e1245_e1345 = a.e1245 * a.e1345;
-        let e1245_e2345 = a.e1245 * a.e2345;
-        let e1345_e1345 = a.e1345 * a.e1345;
-        let e1345_e2345 = a.e1345 * a.e2345;
-        let e2345_e2345 = a.e2345 * a.e2345;
-        Quadvector {
-            e1234: (s_s
-                + e12_e12
-                + e13_e13
-                + e14_e14
-                + e15_e15
-                + e23_e23
-                + e24_e24
-                + e25_e25
-                + e34_e34
-                + e35_e35
-                + e45_e45
-                + e1234_e1234
-                + e1235_e1235
-                + e1245_e1245
-                + e1345_e1345
-                + e2345_e2345)
-                * x.e1234
-                + (-(s_e45 + s_e45)
-                    - (e12_e1245 + e12_e1245)
-                    - (e13_e1345 + e13_e1345)
-                    - (e14_e15 + e14_e15)
-                    - (e23_e2345 + e23_e2345)
-                    - (e24_e25 + e24_e25)
-                    - (e34_e35 + e34_e35)
-                    - (e1234_e1235 + e1234_e1235))
-                    * x.e1235
-                + ((s_e35 + s_e35) + (e12_e1235 + e12_e1235) + (e13_e15 + e13_e15)
-                    - (e14_e1345 + e14_e1345)
-                    + (e23_e25 + e23_e25)
-                    - (e24_e2345 + e24_e2345)
-                    - (e34_e45 + e34_e45)
-                    - (e1234_e1245 + e1234_e1245))
-                    * x.e1245
-                + ((e13_e1235 + e13_e1235) - (s_e25 + s_e25) - (e12_e15 + e12_e15)
-                    + (e14_e1245 + e14_e1245)
-                    + (e23_e35 + e23_e35)
-                    + (e24_e45 + e24_e45)
-                    - (e34_e2345 + e34_e2345)
-                    - (e1234_e1345 + e1234_e1345))
-                    * x.e1345
-                + ((s_e15 + s_e15)
-                    - (e12_e25 + e12_e25)
-                    - (e13_e35 + e13_e35)
-                    - (e14_e45 + e14_e45)
-                    + (e23_e1235 + e23_e1235)
-                    + (e24_e1245 + e24_e1245)
-                    + (e34_e1345 + e34_e1345)
-                    - (e1234_e2345 + e1234_e2345))
-                    * x.e2345,
-            e1235: ((e14_e15 + e14_e15)
-                - (s_e45 + s_e45)
-                - (e12_e1245 + e12_e1245)
-                - (e13_e1345 + e13_e1345)
-                - (e23_e2345 + e23_e2345)
-                + (e24_e25 + e24_e25)
-                + (e34_e35 + e34_e35)
-                + (e1234_e1235 + e1234_e1235))
-                * x.e1234
-                + (s_s + e12_e12 + e13_e13 - e14_e14 - e15_e15 + e23_e23
-                    - e24_e24
-                    - e25_e25
-                    - e34_e34
-                    - e35_e35
-                    + e45_e45
-                    - e1234_e1234
-                    - e1235_e1235
-                    + e1245_e1245
-                    + e1345_e1345
-                    + e2345_e2345)
-                    * x.e1235
-                + ((s_e34 + s_e34) + (e12_e1234 + e12_e1234) + (e13_e14 + e13_e14)
-                    - (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    - (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e1245
-                + ((e13_e1234 + e13_e1234) - (s_e24 + s_e24) - (e12_e14 + e12_e14)
-                    + (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    + (e25_e45 + e25_e45)
-                    - (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e1345
-                + ((s_e14 + s_e14)
-                    - (e12_e24 + e12_e24)
-                    - (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    + (e23_e1234 + e23_e1234)
-                    + (e25_e1245 + e25_e1245)
-                    + (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e2345,
-            e1245: ((s_e35 + s_e35) + (e12_e1235 + e12_e1235)
-                - (e13_e15 + e13_e15)
-                - (e14_e1345 + e14_e1345)
-                - (e23_e25 + e23_e25)
-                - (e24_e2345 + e24_e2345)
-                + (e34_e45 + e34_e45)
-                + (e1234_e1245 + e1234_e1245))
-                * x.e1234
-                + ((e13_e14 + e13_e14) - (s_e34 + s_e34) - (e12_e1234 + e12_e1234)
-                    + (e15_e1345 + e15_e1345)
-                    + (e23_e24 + e23_e24)
-                    + (e25_e2345 + e25_e2345)
-                    - (e35_e45 + e35_e45)
-                    - (e1235_e1245 + e1235_e1245))
-                    * x.e1235
-                + (s_s + e12_e12 - e13_e13 + e14_e14 - e15_e15 - e23_e23 + e24_e24
-                    - e25_e25
-                    - e34_e34
-                    + e35_e35
-                    - e45_e45
-                    - e1234_e1234
-                    + e1235_e1235
-                    - e1245_e1245
-                    + e1345_e1345
-                    + e2345_e2345)
-                    * x.e1245
-                + ((s_e23 + s_e23) + (e12_e13 + e12_e13) + (e14_e1234 + e14_e1234)
-                    - (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    - (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e1345
-                + ((e12_e23 + e12_e23) - (s_e13 + s_e13) - (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    + (e24_e1234 + e24_e1234)
-                    - (e25_e1235 + e25_e1235)
-                    + (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e2345,
-            e1345: ((e12_e15 + e12_e15) - (s_e25 + s_e25)
-                + (e13_e1235 + e13_e1235)
-                + (e14_e1245 + e14_e1245)
-                - (e23_e35 + e23_e35)
-                - (e24_e45 + e24_e45)
-                - (e34_e2345 + e34_e2345)
-                + (e1234_e1345 + e1234_e1345))
-                * x.e1234
-                + ((s_e24 + s_e24)
-                    - (e12_e14 + e12_e14)
-                    - (e13_e1234 + e13_e1234)
-                    - (e15_e1245 + e15_e1245)
-                    + (e23_e34 + e23_e34)
-                    + (e25_e45 + e25_e45)
-                    + (e35_e2345 + e35_e2345)
-                    - (e1235_e1345 + e1235_e1345))
-                    * x.e1235
-                + ((e12_e13 + e12_e13) - (s_e23 + s_e23) - (e14_e1234 + e14_e1234)
-                    + (e15_e1235 + e15_e1235)
-                    + (e24_e34 + e24_e34)
-                    - (e25_e35 + e25_e35)
-                    + (e45_e2345 + e45_e2345)
-                    - (e1245_e1345 + e1245_e1345))
-                    * x.e1245
-                + (s_s - e12_e12 + e13_e13 + e14_e14 - e15_e15 - e23_e23 - e24_e24
-                    + e25_e25
-                    + e34_e34
-                    - e35_e35
-                    - e45_e45
-                    - e1234_e1234
-                    + e1235_e1235
-                    + e1245_e1245
-                    - e1345_e1345
-                    + e2345_e2345)
-                    * x.e1345
-                + ((s_e12 + s_e12) + (e13_e23 + e13_e23) + (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    + (e34_e1234 + e34_e1234)
-                    - (e35_e1235 + e35_e1235)
-                    - (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e2345,
-            e2345: ((s_e15 + s_e15)
-                + (e12_e25 + e12_e25)
-                + (e13_e35 + e13_e35)
-                + (e14_e45 + e14_e45)
-                + (e23_e1235 + e23_e1235)
-                + (e24_e1245 + e24_e1245)
-                + (e34_e1345 + e34_e1345)
-                + (e1234_e2345 + e1234_e2345))
-                * x.e1234
-                + (-(s_e14 + s_e14)
-                    - (e12_e24 + e12_e24)
-                    - (e13_e34 + e13_e34)
-                    - (e15_e45 + e15_e45)
-                    - (e23_e1234 + e23_e1234)
-                    - (e25_e1245 + e25_e1245)
-                    - (e35_e1345 + e35_e1345)
-                    - (e1235_e2345 + e1235_e2345))
-                    * x.e1235
-                + ((s_e13 + s_e13) + (e12_e23 + e12_e23) - (e14_e34 + e14_e34)
-                    + (e15_e35 + e15_e35)
-                    - (e24_e1234 + e24_e1234)
-                    + (e25_e1235 + e25_e1235)
-                    - (e45_e1345 + e45_e1345)
-                    - (e1245_e2345 + e1245_e2345))
-                    * x.e1245
-                + ((e13_e23 + e13_e23) - (s_e12 + s_e12) + (e14_e24 + e14_e24)
-                    - (e15_e25 + e15_e25)
-                    - (e34_e1234 + e34_e1234)
-                    + (e35_e1235 + e35_e1235)
-                    + (e45_e1245 + e45_e1245)
-                    - (e1345_e2345 + e1345_e2345))
-                    * x.e1345
-                + (s_s - e12_e12 - e13_e13 - e14_e14 + e15_e15 + e23_e23 + e24_e24 - e25_e25
-                    + e34_e34
-                    - e35_e35
-                    - e45_e45
-                    - e1234_e1234
-                    + e1235_e1235
-                    + e1245_e1245
-                    + e1345_e1345
-                    - e2345_e2345)
-                    * x.e2345,
-        }
+                    + e2345_e2345,
+            ],
+        ]
     }
 }

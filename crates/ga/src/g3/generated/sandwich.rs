@@ -13,16 +13,14 @@ impl<T: Scalar> Sandwich<Vector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Vector<T>) -> Vector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e3_e3 = a.e3 * a.e3;
+        let w_s = a.e1 * x.e1 + a.e2 * x.e2 + a.e3 * x.e3;
+        let w_e12 = a.e1 * x.e2 - a.e2 * x.e1;
+        let w_e23 = a.e2 * x.e3 - a.e3 * x.e2;
+        let w_e31 = a.e3 * x.e1 - a.e1 * x.e3;
         Vector {
-            e1: (e1_e1 - e2_e2 - e3_e3) * x.e1 + (e1_e2 + e1_e2) * x.e2 + (e1_e3 + e1_e3) * x.e3,
-            e2: (e1_e2 + e1_e2) * x.e1 + (e2_e2 - e1_e1 - e3_e3) * x.e2 + (e2_e3 + e2_e3) * x.e3,
-            e3: (e1_e3 + e1_e3) * x.e1 + (e2_e3 + e2_e3) * x.e2 + (e3_e3 - e1_e1 - e2_e2) * x.e3,
+            e1: w_s * a.e1 + w_e12 * a.e2 - w_e31 * a.e3,
+            e2: w_s * a.e2 - w_e12 * a.e1 + w_e23 * a.e3,
+            e3: w_s * a.e3 - w_e23 * a.e2 + w_e31 * a.e1,
         }
     }
 }
@@ -33,22 +31,14 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Vector<T> {
     #[inline]
     fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
         let a = self;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e3_e3 = a.e3 * a.e3;
+        let w_e1 = a.e3 * x.e31 - a.e2 * x.e12;
+        let w_e2 = a.e1 * x.e12 - a.e3 * x.e23;
+        let w_e3 = a.e2 * x.e23 - a.e1 * x.e31;
+        let w_e123 = a.e1 * x.e23 + a.e2 * x.e31 + a.e3 * x.e12;
         Bivector {
-            e12: (e3_e3 - e1_e1 - e2_e2) * x.e12
-                + (e1_e3 + e1_e3) * x.e23
-                + (e2_e3 + e2_e3) * x.e31,
-            e23: (e1_e3 + e1_e3) * x.e12
-                + (e1_e1 - e2_e2 - e3_e3) * x.e23
-                + (e1_e2 + e1_e2) * x.e31,
-            e31: (e2_e3 + e2_e3) * x.e12
-                + (e1_e2 + e1_e2) * x.e23
-                + (e2_e2 - e1_e1 - e3_e3) * x.e31,
+            e12: w_e1 * a.e2 - w_e2 * a.e1 + w_e123 * a.e3,
+            e23: w_e2 * a.e3 - w_e3 * a.e2 + w_e123 * a.e1,
+            e31: w_e3 * a.e1 - w_e1 * a.e3 + w_e123 * a.e2,
         }
     }
 }
@@ -99,22 +89,14 @@ impl<T: Scalar> Sandwich<Vector<T>> for Bivector<T> {
     #[inline]
     fn sandwich(self, x: Vector<T>) -> Vector<T> {
         let a = self;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e31 = a.e12 * a.e31;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e31 = a.e23 * a.e31;
-        let e31_e31 = a.e31 * a.e31;
+        let w_e1 = a.e12 * x.e2 - a.e31 * x.e3;
+        let w_e2 = a.e23 * x.e3 - a.e12 * x.e1;
+        let w_e3 = a.e31 * x.e1 - a.e23 * x.e2;
+        let w_e123 = a.e12 * x.e3 + a.e23 * x.e1 + a.e31 * x.e2;
         Vector {
-            e1: (e23_e23 - e12_e12 - e31_e31) * x.e1
-                + (e23_e31 + e23_e31) * x.e2
-                + (e12_e23 + e12_e23) * x.e3,
-            e2: (e23_e31 + e23_e31) * x.e1
-                + (e31_e31 - e12_e12 - e23_e23) * x.e2
-                + (e12_e31 + e12_e31) * x.e3,
-            e3: (e12_e23 + e12_e23) * x.e1
-                + (e12_e31 + e12_e31) * x.e2
-                + (e12_e12 - e23_e23 - e31_e31) * x.e3,
+            e1: w_e2 * a.e12 - w_e3 * a.e31 + w_e123 * a.e23,
+            e2: w_e3 * a.e23 - w_e1 * a.e12 + w_e123 * a.e31,
+            e3: w_e1 * a.e31 - w_e2 * a.e23 + w_e123 * a.e12,
         }
     }
 }
@@ -125,22 +107,14 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Bivector<T> {
     #[inline]
     fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
         let a = self;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e31 = a.e12 * a.e31;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e31 = a.e23 * a.e31;
-        let e31_e31 = a.e31 * a.e31;
+        let w_s = -a.e12 * x.e12 - a.e23 * x.e23 - a.e31 * x.e31;
+        let w_e12 = a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e23 = a.e12 * x.e31 - a.e31 * x.e12;
+        let w_e31 = a.e23 * x.e12 - a.e12 * x.e23;
         Bivector {
-            e12: (e12_e12 - e23_e23 - e31_e31) * x.e12
-                + (e12_e23 + e12_e23) * x.e23
-                + (e12_e31 + e12_e31) * x.e31,
-            e23: (e12_e23 + e12_e23) * x.e12
-                + (e23_e23 - e12_e12 - e31_e31) * x.e23
-                + (e23_e31 + e23_e31) * x.e31,
-            e31: (e12_e31 + e12_e31) * x.e12
-                + (e23_e31 + e23_e31) * x.e23
-                + (e31_e31 - e12_e12 - e23_e23) * x.e31,
+            e12: w_e23 * a.e31 - w_s * a.e12 - w_e31 * a.e23,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31,
+            e31: w_e12 * a.e23 - w_s * a.e31 - w_e23 * a.e12,
         }
     }
 }
@@ -191,26 +165,14 @@ impl<T: Scalar> Sandwich<Vector<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Vector<T>) -> Vector<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e23 = a.s * a.e23;
-        let s_e31 = a.s * a.e31;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e31 = a.e12 * a.e31;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e31 = a.e23 * a.e31;
-        let e31_e31 = a.e31 * a.e31;
+        let w_e1 = a.s * x.e1 + a.e12 * x.e2 - a.e31 * x.e3;
+        let w_e2 = a.s * x.e2 - a.e12 * x.e1 + a.e23 * x.e3;
+        let w_e3 = a.s * x.e3 - a.e23 * x.e2 + a.e31 * x.e1;
+        let w_e123 = a.e12 * x.e3 + a.e23 * x.e1 + a.e31 * x.e2;
         Vector {
-            e1: (s_s - e12_e12 + e23_e23 - e31_e31) * x.e1
-                + ((s_e12 + s_e12) + (e23_e31 + e23_e31)) * x.e2
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e3,
-            e2: ((e23_e31 + e23_e31) - (s_e12 + s_e12)) * x.e1
-                + (s_s - e12_e12 - e23_e23 + e31_e31) * x.e2
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e3,
-            e3: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e1
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e2
-                + (s_s + e12_e12 - e23_e23 - e31_e31) * x.e3,
+            e1: w_e1 * a.s + w_e2 * a.e12 - w_e3 * a.e31 + w_e123 * a.e23,
+            e2: w_e2 * a.s - w_e1 * a.e12 + w_e3 * a.e23 + w_e123 * a.e31,
+            e3: w_e1 * a.e31 - w_e2 * a.e23 + w_e3 * a.s + w_e123 * a.e12,
         }
     }
 }
@@ -221,26 +183,14 @@ impl<T: Scalar> Sandwich<Bivector<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Bivector<T>) -> Bivector<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e23 = a.s * a.e23;
-        let s_e31 = a.s * a.e31;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e31 = a.e12 * a.e31;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e31 = a.e23 * a.e31;
-        let e31_e31 = a.e31 * a.e31;
+        let w_s = -a.e12 * x.e12 - a.e23 * x.e23 - a.e31 * x.e31;
+        let w_e12 = a.s * x.e12 - a.e23 * x.e31 + a.e31 * x.e23;
+        let w_e23 = a.s * x.e23 + a.e12 * x.e31 - a.e31 * x.e12;
+        let w_e31 = a.s * x.e31 - a.e12 * x.e23 + a.e23 * x.e12;
         Bivector {
-            e12: (s_s + e12_e12 - e23_e23 - e31_e31) * x.e12
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e23
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e31,
-            e23: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e12
-                + (s_s - e12_e12 + e23_e23 - e31_e31) * x.e23
-                + ((s_e12 + s_e12) + (e23_e31 + e23_e31)) * x.e31,
-            e31: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e12
-                + ((e23_e31 + e23_e31) - (s_e12 + s_e12)) * x.e23
-                + (s_s - e12_e12 - e23_e23 + e31_e31) * x.e31,
+            e12: w_e12 * a.s - w_s * a.e12 + w_e23 * a.e31 - w_e31 * a.e23,
+            e23: w_e23 * a.s - w_s * a.e23 - w_e12 * a.e31 + w_e31 * a.e12,
+            e31: w_e12 * a.e23 - w_s * a.e31 - w_e23 * a.e12 + w_e31 * a.s,
         }
     }
 }

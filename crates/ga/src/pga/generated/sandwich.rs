@@ -13,23 +13,18 @@ impl<T: Scalar> Sandwich<Plane<T>> for Plane<T> {
     #[inline]
     fn sandwich(self, x: Plane<T>) -> Plane<T> {
         let a = self;
-        let e0_e1 = a.e0 * a.e1;
-        let e0_e2 = a.e0 * a.e2;
-        let e0_e3 = a.e0 * a.e3;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e3_e3 = a.e3 * a.e3;
+        let w_s = a.e1 * x.e1 + a.e2 * x.e2 + a.e3 * x.e3;
+        let w_e01 = a.e0 * x.e1 - a.e1 * x.e0;
+        let w_e02 = a.e0 * x.e2 - a.e2 * x.e0;
+        let w_e03 = a.e0 * x.e3 - a.e3 * x.e0;
+        let w_e12 = a.e1 * x.e2 - a.e2 * x.e1;
+        let w_e31 = a.e3 * x.e1 - a.e1 * x.e3;
+        let w_e23 = a.e2 * x.e3 - a.e3 * x.e2;
         Plane {
-            e0: (-e1_e1 - e2_e2 - e3_e3) * x.e0
-                + (e0_e1 + e0_e1) * x.e1
-                + (e0_e2 + e0_e2) * x.e2
-                + (e0_e3 + e0_e3) * x.e3,
-            e1: (e1_e1 - e2_e2 - e3_e3) * x.e1 + (e1_e2 + e1_e2) * x.e2 + (e1_e3 + e1_e3) * x.e3,
-            e2: (e1_e2 + e1_e2) * x.e1 + (e2_e2 - e1_e1 - e3_e3) * x.e2 + (e2_e3 + e2_e3) * x.e3,
-            e3: (e1_e3 + e1_e3) * x.e1 + (e2_e3 + e2_e3) * x.e2 + (e3_e3 - e1_e1 - e2_e2) * x.e3,
+            e0: w_s * a.e0 + w_e01 * a.e1 + w_e02 * a.e2 + w_e03 * a.e3,
+            e1: w_s * a.e1 + w_e12 * a.e2 - w_e31 * a.e3,
+            e2: w_s * a.e2 - w_e12 * a.e1 + w_e23 * a.e3,
+            e3: w_s * a.e3 + w_e31 * a.e1 - w_e23 * a.e2,
         }
     }
 }
@@ -40,40 +35,21 @@ impl<T: Scalar> Sandwich<Line<T>> for Plane<T> {
     #[inline]
     fn sandwich(self, x: Line<T>) -> Line<T> {
         let a = self;
-        let e0_e1 = a.e0 * a.e1;
-        let e0_e2 = a.e0 * a.e2;
-        let e0_e3 = a.e0 * a.e3;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e3_e3 = a.e3 * a.e3;
+        let w_e0 = -a.e1 * x.e01 - a.e2 * x.e02 - a.e3 * x.e03;
+        let w_e1 = a.e3 * x.e31 - a.e2 * x.e12;
+        let w_e2 = a.e1 * x.e12 - a.e3 * x.e23;
+        let w_e3 = a.e2 * x.e23 - a.e1 * x.e31;
+        let w_e021 = a.e1 * x.e02 - a.e0 * x.e12 - a.e2 * x.e01;
+        let w_e013 = a.e3 * x.e01 - a.e0 * x.e31 - a.e1 * x.e03;
+        let w_e032 = a.e2 * x.e03 - a.e0 * x.e23 - a.e3 * x.e02;
+        let w_e123 = a.e1 * x.e23 + a.e2 * x.e31 + a.e3 * x.e12;
         Line {
-            e01: (e2_e2 - e1_e1 + e3_e3) * x.e01
-                + (-(e1_e2 + e1_e2)) * x.e02
-                + (-(e1_e3 + e1_e3)) * x.e03
-                + (e0_e2 + e0_e2) * x.e12
-                + (-(e0_e3 + e0_e3)) * x.e31,
-            e02: (-(e1_e2 + e1_e2)) * x.e01
-                + (e1_e1 - e2_e2 + e3_e3) * x.e02
-                + (-(e2_e3 + e2_e3)) * x.e03
-                + (-(e0_e1 + e0_e1)) * x.e12
-                + (e0_e3 + e0_e3) * x.e23,
-            e03: (-(e1_e3 + e1_e3)) * x.e01
-                + (-(e2_e3 + e2_e3)) * x.e02
-                + (e1_e1 + e2_e2 - e3_e3) * x.e03
-                + (e0_e1 + e0_e1) * x.e31
-                + (-(e0_e2 + e0_e2)) * x.e23,
-            e12: (e3_e3 - e1_e1 - e2_e2) * x.e12
-                + (e2_e3 + e2_e3) * x.e31
-                + (e1_e3 + e1_e3) * x.e23,
-            e31: (e2_e3 + e2_e3) * x.e12
-                + (e2_e2 - e1_e1 - e3_e3) * x.e31
-                + (e1_e2 + e1_e2) * x.e23,
-            e23: (e1_e3 + e1_e3) * x.e12
-                + (e1_e2 + e1_e2) * x.e31
-                + (e1_e1 - e2_e2 - e3_e3) * x.e23,
+            e01: w_e0 * a.e1 - w_e1 * a.e0 - w_e021 * a.e2 + w_e013 * a.e3,
+            e02: w_e0 * a.e2 - w_e2 * a.e0 + w_e021 * a.e1 - w_e032 * a.e3,
+            e03: w_e0 * a.e3 - w_e3 * a.e0 - w_e013 * a.e1 + w_e032 * a.e2,
+            e12: w_e1 * a.e2 - w_e2 * a.e1 + w_e123 * a.e3,
+            e31: w_e3 * a.e1 - w_e1 * a.e3 + w_e123 * a.e2,
+            e23: w_e2 * a.e3 - w_e3 * a.e2 + w_e123 * a.e1,
         }
     }
 }
@@ -84,29 +60,18 @@ impl<T: Scalar> Sandwich<Point<T>> for Plane<T> {
     #[inline]
     fn sandwich(self, x: Point<T>) -> Point<T> {
         let a = self;
-        let e0_e1 = a.e0 * a.e1;
-        let e0_e2 = a.e0 * a.e2;
-        let e0_e3 = a.e0 * a.e3;
-        let e1_e1 = a.e1 * a.e1;
-        let e1_e2 = a.e1 * a.e2;
-        let e1_e3 = a.e1 * a.e3;
-        let e2_e2 = a.e2 * a.e2;
-        let e2_e3 = a.e2 * a.e3;
-        let e3_e3 = a.e3 * a.e3;
+        let w_e01 = a.e3 * x.e013 - a.e2 * x.e021;
+        let w_e02 = a.e1 * x.e021 - a.e3 * x.e032;
+        let w_e03 = a.e2 * x.e032 - a.e1 * x.e013;
+        let w_e12 = a.e3 * x.e123;
+        let w_e31 = a.e2 * x.e123;
+        let w_e23 = a.e1 * x.e123;
+        let w_e0123 = a.e0 * x.e123 + a.e1 * x.e032 + a.e2 * x.e013 + a.e3 * x.e021;
         Point {
-            e021: (e1_e1 + e2_e2 - e3_e3) * x.e021
-                + (-(e2_e3 + e2_e3)) * x.e013
-                + (-(e1_e3 + e1_e3)) * x.e032
-                + (-(e0_e3 + e0_e3)) * x.e123,
-            e013: (-(e2_e3 + e2_e3)) * x.e021
-                + (e1_e1 - e2_e2 + e3_e3) * x.e013
-                + (-(e1_e2 + e1_e2)) * x.e032
-                + (-(e0_e2 + e0_e2)) * x.e123,
-            e032: (-(e1_e3 + e1_e3)) * x.e021
-                + (-(e1_e2 + e1_e2)) * x.e013
-                + (e2_e2 - e1_e1 + e3_e3) * x.e032
-                + (-(e0_e1 + e0_e1)) * x.e123,
-            e123: (e1_e1 + e2_e2 + e3_e3) * x.e123,
+            e021: w_e02 * a.e1 - w_e01 * a.e2 - w_e12 * a.e0 - w_e0123 * a.e3,
+            e013: w_e01 * a.e3 - w_e03 * a.e1 - w_e31 * a.e0 - w_e0123 * a.e2,
+            e032: w_e03 * a.e2 - w_e02 * a.e3 - w_e23 * a.e0 - w_e0123 * a.e1,
+            e123: w_e12 * a.e3 + w_e31 * a.e2 + w_e23 * a.e1,
         }
     }
 }
@@ -224,32 +189,21 @@ impl<T: Scalar> Sandwich<Plane<T>> for Line<T> {
     #[inline]
     fn sandwich(self, x: Plane<T>) -> Plane<T> {
         let a = self;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_e1 = a.e12 * x.e2 - a.e31 * x.e3;
+        let w_e2 = a.e23 * x.e3 - a.e12 * x.e1;
+        let w_e3 = a.e31 * x.e1 - a.e23 * x.e2;
+        let w_e021 = a.e02 * x.e1 - a.e01 * x.e2 - a.e12 * x.e0;
+        let w_e013 = a.e01 * x.e3 - a.e03 * x.e1 - a.e31 * x.e0;
+        let w_e032 = a.e03 * x.e2 - a.e02 * x.e3 - a.e23 * x.e0;
+        let w_e123 = a.e12 * x.e3 + a.e31 * x.e2 + a.e23 * x.e1;
         Plane {
-            e0: (e12_e12 + e31_e31 + e23_e23) * x.e0
-                + ((e03_e31 + e03_e31) - (e02_e12 + e02_e12)) * x.e1
-                + ((e01_e12 + e01_e12) - (e03_e23 + e03_e23)) * x.e2
-                + ((e02_e23 + e02_e23) - (e01_e31 + e01_e31)) * x.e3,
-            e1: (e23_e23 - e12_e12 - e31_e31) * x.e1
-                + (e31_e23 + e31_e23) * x.e2
-                + (e12_e23 + e12_e23) * x.e3,
-            e2: (e31_e23 + e31_e23) * x.e1
-                + (e31_e31 - e12_e12 - e23_e23) * x.e2
-                + (e12_e31 + e12_e31) * x.e3,
-            e3: (e12_e23 + e12_e23) * x.e1
-                + (e12_e31 + e12_e31) * x.e2
-                + (e12_e12 - e31_e31 - e23_e23) * x.e3,
+            e0: w_e1 * a.e01 + w_e2 * a.e02 + w_e3 * a.e03
+                - w_e021 * a.e12
+                - w_e013 * a.e31
+                - w_e032 * a.e23,
+            e1: w_e2 * a.e12 - w_e3 * a.e31 + w_e123 * a.e23,
+            e2: w_e3 * a.e23 - w_e1 * a.e12 + w_e123 * a.e31,
+            e3: w_e1 * a.e31 - w_e2 * a.e23 + w_e123 * a.e12,
         }
     }
 }
@@ -260,49 +214,31 @@ impl<T: Scalar> Sandwich<Line<T>> for Line<T> {
     #[inline]
     fn sandwich(self, x: Line<T>) -> Line<T> {
         let a = self;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e01_e23 = a.e01 * a.e23;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e31 = a.e02 * a.e31;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e12 = a.e03 * a.e12;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_s = -a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.e03 * x.e31 - a.e02 * x.e12 + a.e12 * x.e02 - a.e31 * x.e03;
+        let w_e02 = a.e01 * x.e12 - a.e03 * x.e23 - a.e12 * x.e01 + a.e23 * x.e03;
+        let w_e03 = a.e02 * x.e23 - a.e01 * x.e31 + a.e31 * x.e01 - a.e23 * x.e02;
+        let w_e12 = a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.e23 * x.e12 - a.e12 * x.e23;
+        let w_e23 = a.e12 * x.e31 - a.e31 * x.e12;
+        let w_e0123 = a.e01 * x.e23
+            + a.e02 * x.e31
+            + a.e03 * x.e12
+            + a.e12 * x.e03
+            + a.e31 * x.e02
+            + a.e23 * x.e01;
         Line {
-            e01: (e23_e23 - e12_e12 - e31_e31) * x.e01
-                + (e31_e23 + e31_e23) * x.e02
-                + (e12_e23 + e12_e23) * x.e03
-                + ((e01_e12 + e01_e12) + (e03_e23 + e03_e23)) * x.e12
-                + ((e01_e31 + e01_e31) + (e02_e23 + e02_e23)) * x.e31
-                + ((e01_e23 + e01_e23) - (e02_e31 + e02_e31) - (e03_e12 + e03_e12)) * x.e23,
-            e02: (e31_e23 + e31_e23) * x.e01
-                + (e31_e31 - e12_e12 - e23_e23) * x.e02
-                + (e12_e31 + e12_e31) * x.e03
-                + ((e02_e12 + e02_e12) + (e03_e31 + e03_e31)) * x.e12
-                + ((e02_e31 + e02_e31) - (e01_e23 + e01_e23) - (e03_e12 + e03_e12)) * x.e31
-                + ((e01_e31 + e01_e31) + (e02_e23 + e02_e23)) * x.e23,
-            e03: (e12_e23 + e12_e23) * x.e01
-                + (e12_e31 + e12_e31) * x.e02
-                + (e12_e12 - e31_e31 - e23_e23) * x.e03
-                + ((e03_e12 + e03_e12) - (e01_e23 + e01_e23) - (e02_e31 + e02_e31)) * x.e12
-                + ((e02_e12 + e02_e12) + (e03_e31 + e03_e31)) * x.e31
-                + ((e01_e12 + e01_e12) + (e03_e23 + e03_e23)) * x.e23,
-            e12: (e12_e12 - e31_e31 - e23_e23) * x.e12
-                + (e12_e31 + e12_e31) * x.e31
-                + (e12_e23 + e12_e23) * x.e23,
-            e31: (e12_e31 + e12_e31) * x.e12
-                + (e31_e31 - e12_e12 - e23_e23) * x.e31
-                + (e31_e23 + e31_e23) * x.e23,
-            e23: (e12_e23 + e12_e23) * x.e12
-                + (e31_e23 + e31_e23) * x.e31
-                + (e23_e23 - e12_e12 - e31_e31) * x.e23,
+            e01: w_e02 * a.e12 - w_s * a.e01 - w_e03 * a.e31 - w_e12 * a.e02
+                + w_e31 * a.e03
+                + w_e0123 * a.e23,
+            e02: w_e03 * a.e23 - w_s * a.e02 - w_e01 * a.e12 + w_e12 * a.e01 - w_e23 * a.e03
+                + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_s * a.e03 - w_e02 * a.e23 - w_e31 * a.e01
+                + w_e23 * a.e02
+                + w_e0123 * a.e12,
+            e12: w_e23 * a.e31 - w_s * a.e12 - w_e31 * a.e23,
+            e31: w_e12 * a.e23 - w_s * a.e31 - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31,
         }
     }
 }
@@ -313,32 +249,18 @@ impl<T: Scalar> Sandwich<Point<T>> for Line<T> {
     #[inline]
     fn sandwich(self, x: Point<T>) -> Point<T> {
         let a = self;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_e0 = a.e12 * x.e021 + a.e31 * x.e013 + a.e23 * x.e032;
+        let w_e1 = -a.e23 * x.e123;
+        let w_e2 = -a.e31 * x.e123;
+        let w_e3 = -a.e12 * x.e123;
+        let w_e021 = a.e31 * x.e032 - a.e03 * x.e123 - a.e23 * x.e013;
+        let w_e013 = a.e23 * x.e021 - a.e02 * x.e123 - a.e12 * x.e032;
+        let w_e032 = a.e12 * x.e013 - a.e01 * x.e123 - a.e31 * x.e021;
         Point {
-            e021: (e12_e12 - e31_e31 - e23_e23) * x.e021
-                + (e12_e31 + e12_e31) * x.e013
-                + (e12_e23 + e12_e23) * x.e032
-                + ((e02_e23 + e02_e23) - (e01_e31 + e01_e31)) * x.e123,
-            e013: (e12_e31 + e12_e31) * x.e021
-                + (e31_e31 - e12_e12 - e23_e23) * x.e013
-                + (e31_e23 + e31_e23) * x.e032
-                + ((e01_e12 + e01_e12) - (e03_e23 + e03_e23)) * x.e123,
-            e032: (e12_e23 + e12_e23) * x.e021
-                + (e31_e23 + e31_e23) * x.e013
-                + (e23_e23 - e12_e12 - e31_e31) * x.e032
-                + ((e03_e31 + e03_e31) - (e02_e12 + e02_e12)) * x.e123,
-            e123: (e12_e12 + e31_e31 + e23_e23) * x.e123,
+            e021: w_e0 * a.e12 - w_e1 * a.e02 + w_e2 * a.e01 - w_e013 * a.e23 + w_e032 * a.e31,
+            e013: w_e0 * a.e31 + w_e1 * a.e03 - w_e3 * a.e01 + w_e021 * a.e23 - w_e032 * a.e12,
+            e032: w_e0 * a.e23 - w_e2 * a.e03 + w_e3 * a.e02 - w_e021 * a.e31 + w_e013 * a.e12,
+            e123: -w_e1 * a.e23 - w_e2 * a.e31 - w_e3 * a.e12,
         }
     }
 }
@@ -349,52 +271,42 @@ impl<T: Scalar> Sandwich<Motor<T>> for Line<T> {
     #[inline]
     fn sandwich(self, x: Motor<T>) -> Motor<T> {
         let a = self;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e01_e23 = a.e01 * a.e23;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e31 = a.e02 * a.e31;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e12 = a.e03 * a.e12;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_s = -a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.e01 * x.s - a.e02 * x.e12 + a.e03 * x.e31 + a.e12 * x.e02
+            - a.e31 * x.e03
+            - a.e23 * x.e0123;
+        let w_e02 = a.e01 * x.e12 + a.e02 * x.s - a.e03 * x.e23 - a.e12 * x.e01 - a.e31 * x.e0123
+            + a.e23 * x.e03;
+        let w_e03 = a.e02 * x.e23 - a.e01 * x.e31 + a.e03 * x.s - a.e12 * x.e0123 + a.e31 * x.e01
+            - a.e23 * x.e02;
+        let w_e12 = a.e12 * x.s + a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.e31 * x.s - a.e12 * x.e23 + a.e23 * x.e12;
+        let w_e23 = a.e12 * x.e31 - a.e31 * x.e12 + a.e23 * x.s;
+        let w_e0123 = a.e01 * x.e23
+            + a.e02 * x.e31
+            + a.e03 * x.e12
+            + a.e12 * x.e03
+            + a.e31 * x.e02
+            + a.e23 * x.e01;
         Motor {
-            s: (e12_e12 + e31_e31 + e23_e23) * x.s,
-            e01: (e23_e23 - e12_e12 - e31_e31) * x.e01
-                + (e31_e23 + e31_e23) * x.e02
-                + (e12_e23 + e12_e23) * x.e03
-                + ((e01_e12 + e01_e12) + (e03_e23 + e03_e23)) * x.e12
-                + ((e01_e31 + e01_e31) + (e02_e23 + e02_e23)) * x.e31
-                + ((e01_e23 + e01_e23) - (e02_e31 + e02_e31) - (e03_e12 + e03_e12)) * x.e23,
-            e02: (e31_e23 + e31_e23) * x.e01
-                + (e31_e31 - e12_e12 - e23_e23) * x.e02
-                + (e12_e31 + e12_e31) * x.e03
-                + ((e02_e12 + e02_e12) + (e03_e31 + e03_e31)) * x.e12
-                + ((e02_e31 + e02_e31) - (e01_e23 + e01_e23) - (e03_e12 + e03_e12)) * x.e31
-                + ((e01_e31 + e01_e31) + (e02_e23 + e02_e23)) * x.e23,
-            e03: (e12_e23 + e12_e23) * x.e01
-                + (e12_e31 + e12_e31) * x.e02
-                + (e12_e12 - e31_e31 - e23_e23) * x.e03
-                + ((e03_e12 + e03_e12) - (e01_e23 + e01_e23) - (e02_e31 + e02_e31)) * x.e12
-                + ((e02_e12 + e02_e12) + (e03_e31 + e03_e31)) * x.e31
-                + ((e01_e12 + e01_e12) + (e03_e23 + e03_e23)) * x.e23,
-            e12: (e12_e12 - e31_e31 - e23_e23) * x.e12
-                + (e12_e31 + e12_e31) * x.e31
-                + (e12_e23 + e12_e23) * x.e23,
-            e31: (e12_e31 + e12_e31) * x.e12
-                + (e31_e31 - e12_e12 - e23_e23) * x.e31
-                + (e31_e23 + e31_e23) * x.e23,
-            e23: (e12_e23 + e12_e23) * x.e12
-                + (e31_e23 + e31_e23) * x.e31
-                + (e23_e23 - e12_e12 - e31_e31) * x.e23,
-            e0123: (-(e01_e23 + e01_e23) - (e02_e31 + e02_e31) - (e03_e12 + e03_e12)) * x.s
-                + (e12_e12 + e31_e31 + e23_e23) * x.e0123,
+            s: w_e12 * a.e12 + w_e31 * a.e31 + w_e23 * a.e23,
+            e01: w_e02 * a.e12 - w_s * a.e01 - w_e03 * a.e31 - w_e12 * a.e02
+                + w_e31 * a.e03
+                + w_e0123 * a.e23,
+            e02: w_e03 * a.e23 - w_s * a.e02 - w_e01 * a.e12 + w_e12 * a.e01 - w_e23 * a.e03
+                + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_s * a.e03 - w_e02 * a.e23 - w_e31 * a.e01
+                + w_e23 * a.e02
+                + w_e0123 * a.e12,
+            e12: w_e23 * a.e31 - w_s * a.e12 - w_e31 * a.e23,
+            e31: w_e12 * a.e23 - w_s * a.e31 - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31,
+            e0123: -w_e01 * a.e23
+                - w_e02 * a.e31
+                - w_e03 * a.e12
+                - w_e12 * a.e03
+                - w_e31 * a.e02
+                - w_e23 * a.e01,
         }
     }
 }
@@ -607,50 +519,23 @@ impl<T: Scalar> Sandwich<Plane<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Plane<T>) -> Plane<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e01 = a.s * a.e01;
-        let s_e02 = a.s * a.e02;
-        let s_e03 = a.s * a.e03;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e0123 = a.e12 * a.e0123;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e31_e0123 = a.e31 * a.e0123;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e0123 = a.e23 * a.e0123;
+        let w_e0 = a.s * x.e0 + a.e01 * x.e1 + a.e02 * x.e2 + a.e03 * x.e3;
+        let w_e1 = a.s * x.e1 + a.e12 * x.e2 - a.e31 * x.e3;
+        let w_e2 = a.s * x.e2 - a.e12 * x.e1 + a.e23 * x.e3;
+        let w_e3 = a.s * x.e3 + a.e31 * x.e1 - a.e23 * x.e2;
+        let w_e021 = a.e02 * x.e1 - a.e01 * x.e2 - a.e12 * x.e0 - a.e0123 * x.e3;
+        let w_e013 = a.e01 * x.e3 - a.e03 * x.e1 - a.e31 * x.e0 - a.e0123 * x.e2;
+        let w_e032 = a.e03 * x.e2 - a.e02 * x.e3 - a.e23 * x.e0 - a.e0123 * x.e1;
+        let w_e123 = a.e12 * x.e3 + a.e31 * x.e2 + a.e23 * x.e1;
         Plane {
-            e0: (s_s + e12_e12 + e31_e31 + e23_e23) * x.e0
-                + ((s_e01 + s_e01) - (e02_e12 + e02_e12)
-                    + (e03_e31 + e03_e31)
-                    + (e23_e0123 + e23_e0123))
-                    * x.e1
-                + ((s_e02 + s_e02) + (e01_e12 + e01_e12) - (e03_e23 + e03_e23)
-                    + (e31_e0123 + e31_e0123))
-                    * x.e2
-                + ((s_e03 + s_e03) - (e01_e31 + e01_e31)
-                    + (e02_e23 + e02_e23)
-                    + (e12_e0123 + e12_e0123))
-                    * x.e3,
-            e1: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e1
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e2
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e3,
-            e2: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e1
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e2
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e3,
-            e3: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e1
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e2
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e3,
+            e0: w_e0 * a.s + w_e1 * a.e01 + w_e2 * a.e02 + w_e3 * a.e03
+                - w_e021 * a.e12
+                - w_e013 * a.e31
+                - w_e032 * a.e23
+                + w_e123 * a.e0123,
+            e1: w_e1 * a.s + w_e2 * a.e12 - w_e3 * a.e31 + w_e123 * a.e23,
+            e2: w_e2 * a.s - w_e1 * a.e12 + w_e3 * a.e23 + w_e123 * a.e31,
+            e3: w_e1 * a.e31 - w_e2 * a.e23 + w_e3 * a.s + w_e123 * a.e12,
         }
     }
 }
@@ -661,87 +546,41 @@ impl<T: Scalar> Sandwich<Line<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Line<T>) -> Line<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e01 = a.s * a.e01;
-        let s_e02 = a.s * a.e02;
-        let s_e03 = a.s * a.e03;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let s_e0123 = a.s * a.e0123;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e01_e23 = a.e01 * a.e23;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e31 = a.e02 * a.e31;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e12 = a.e03 * a.e12;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e0123 = a.e12 * a.e0123;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e31_e0123 = a.e31 * a.e0123;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e0123 = a.e23 * a.e0123;
+        let w_s = -a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.s * x.e01 - a.e02 * x.e12 + a.e03 * x.e31 + a.e12 * x.e02
+            - a.e31 * x.e03
+            - a.e0123 * x.e23;
+        let w_e02 = a.s * x.e02 + a.e01 * x.e12 - a.e03 * x.e23 - a.e12 * x.e01 + a.e23 * x.e03
+            - a.e0123 * x.e31;
+        let w_e03 = a.s * x.e03 - a.e01 * x.e31 + a.e02 * x.e23 + a.e31 * x.e01
+            - a.e23 * x.e02
+            - a.e0123 * x.e12;
+        let w_e12 = a.s * x.e12 + a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.s * x.e31 - a.e12 * x.e23 + a.e23 * x.e12;
+        let w_e23 = a.s * x.e23 + a.e12 * x.e31 - a.e31 * x.e12;
+        let w_e0123 = a.e01 * x.e23
+            + a.e02 * x.e31
+            + a.e03 * x.e12
+            + a.e12 * x.e03
+            + a.e31 * x.e02
+            + a.e23 * x.e01;
         Line {
-            e01: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e01
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e02
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e03
-                + ((e01_e12 + e01_e12) - (s_e02 + s_e02)
-                    + (e03_e23 + e03_e23)
-                    + (e31_e0123 + e31_e0123))
-                    * x.e12
-                + ((s_e03 + s_e03) + (e01_e31 + e01_e31) + (e02_e23 + e02_e23)
-                    - (e12_e0123 + e12_e0123))
-                    * x.e31
-                + ((e01_e23 + e01_e23)
-                    - (s_e0123 + s_e0123)
-                    - (e02_e31 + e02_e31)
-                    - (e03_e12 + e03_e12))
-                    * x.e23,
-            e02: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e01
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e02
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e03
-                + ((s_e01 + s_e01) + (e02_e12 + e02_e12) + (e03_e31 + e03_e31)
-                    - (e23_e0123 + e23_e0123))
-                    * x.e12
-                + ((e02_e31 + e02_e31)
-                    - (s_e0123 + s_e0123)
-                    - (e01_e23 + e01_e23)
-                    - (e03_e12 + e03_e12))
-                    * x.e31
-                + ((e01_e31 + e01_e31) - (s_e03 + s_e03)
-                    + (e02_e23 + e02_e23)
-                    + (e12_e0123 + e12_e0123))
-                    * x.e23,
-            e03: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e01
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e02
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e03
-                + ((e03_e12 + e03_e12)
-                    - (s_e0123 + s_e0123)
-                    - (e01_e23 + e01_e23)
-                    - (e02_e31 + e02_e31))
-                    * x.e12
-                + ((e02_e12 + e02_e12) - (s_e01 + s_e01)
-                    + (e03_e31 + e03_e31)
-                    + (e23_e0123 + e23_e0123))
-                    * x.e31
-                + ((s_e02 + s_e02) + (e01_e12 + e01_e12) + (e03_e23 + e03_e23)
-                    - (e31_e0123 + e31_e0123))
-                    * x.e23,
-            e12: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e12
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e31
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e23,
-            e31: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e12
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e31
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e23,
-            e23: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e12
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e31
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e23,
+            e01: w_e01 * a.s - w_s * a.e01 + w_e02 * a.e12 - w_e03 * a.e31 - w_e12 * a.e02
+                + w_e31 * a.e03
+                - w_e23 * a.e0123
+                + w_e0123 * a.e23,
+            e02: w_e02 * a.s - w_s * a.e02 - w_e01 * a.e12 + w_e03 * a.e23 + w_e12 * a.e01
+                - w_e31 * a.e0123
+                - w_e23 * a.e03
+                + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_s * a.e03 - w_e02 * a.e23 + w_e03 * a.s
+                - w_e12 * a.e0123
+                - w_e31 * a.e01
+                + w_e23 * a.e02
+                + w_e0123 * a.e12,
+            e12: w_e12 * a.s - w_s * a.e12 - w_e31 * a.e23 + w_e23 * a.e31,
+            e31: w_e12 * a.e23 - w_s * a.e31 + w_e31 * a.s - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31 + w_e23 * a.s,
         }
     }
 }
@@ -752,54 +591,29 @@ impl<T: Scalar> Sandwich<Point<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Point<T>) -> Point<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e01 = a.s * a.e01;
-        let s_e02 = a.s * a.e02;
-        let s_e03 = a.s * a.e03;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e0123 = a.e12 * a.e0123;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e31_e0123 = a.e31 * a.e0123;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e0123 = a.e23 * a.e0123;
+        let w_e0 = a.e12 * x.e021 + a.e31 * x.e013 + a.e23 * x.e032 - a.e0123 * x.e123;
+        let w_e1 = -a.e23 * x.e123;
+        let w_e2 = -a.e31 * x.e123;
+        let w_e3 = -a.e12 * x.e123;
+        let w_e021 = a.s * x.e021 - a.e03 * x.e123 + a.e31 * x.e032 - a.e23 * x.e013;
+        let w_e013 = a.s * x.e013 - a.e02 * x.e123 - a.e12 * x.e032 + a.e23 * x.e021;
+        let w_e032 = a.s * x.e032 - a.e01 * x.e123 + a.e12 * x.e013 - a.e31 * x.e021;
+        let w_e123 = a.s * x.e123;
         Point {
-            e021: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e021
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e013
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e032
-                + ((e02_e23 + e02_e23)
-                    - (s_e03 + s_e03)
-                    - (e01_e31 + e01_e31)
-                    - (e12_e0123 + e12_e0123))
-                    * x.e123,
-            e013: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e021
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e013
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e032
-                + ((e01_e12 + e01_e12)
-                    - (s_e02 + s_e02)
-                    - (e03_e23 + e03_e23)
-                    - (e31_e0123 + e31_e0123))
-                    * x.e123,
-            e032: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e021
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e013
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e032
-                + ((e03_e31 + e03_e31)
-                    - (s_e01 + s_e01)
-                    - (e02_e12 + e02_e12)
-                    - (e23_e0123 + e23_e0123))
-                    * x.e123,
-            e123: (s_s + e12_e12 + e31_e31 + e23_e23) * x.e123,
+            e021: w_e0 * a.e12 - w_e1 * a.e02 + w_e2 * a.e01 + w_e3 * a.e0123 + w_e021 * a.s
+                - w_e013 * a.e23
+                + w_e032 * a.e31
+                - w_e123 * a.e03,
+            e013: w_e0 * a.e31 + w_e1 * a.e03 + w_e2 * a.e0123 - w_e3 * a.e01
+                + w_e021 * a.e23
+                + w_e013 * a.s
+                - w_e032 * a.e12
+                - w_e123 * a.e02,
+            e032: w_e0 * a.e23 + w_e1 * a.e0123 - w_e2 * a.e03 + w_e3 * a.e02 - w_e021 * a.e31
+                + w_e013 * a.e12
+                + w_e032 * a.s
+                - w_e123 * a.e01,
+            e123: w_e123 * a.s - w_e1 * a.e23 - w_e2 * a.e31 - w_e3 * a.e12,
         }
     }
 }
@@ -810,94 +624,58 @@ impl<T: Scalar> Sandwich<Motor<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Motor<T>) -> Motor<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e01 = a.s * a.e01;
-        let s_e02 = a.s * a.e02;
-        let s_e03 = a.s * a.e03;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let s_e0123 = a.s * a.e0123;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e01_e23 = a.e01 * a.e23;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e31 = a.e02 * a.e31;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e12 = a.e03 * a.e12;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e0123 = a.e12 * a.e0123;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e31_e0123 = a.e31 * a.e0123;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e0123 = a.e23 * a.e0123;
+        let w_s = a.s * x.s - a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.s * x.e01 + a.e01 * x.s - a.e02 * x.e12 + a.e03 * x.e31 + a.e12 * x.e02
+            - a.e31 * x.e03
+            - a.e23 * x.e0123
+            - a.e0123 * x.e23;
+        let w_e02 = a.s * x.e02 + a.e01 * x.e12 + a.e02 * x.s
+            - a.e03 * x.e23
+            - a.e12 * x.e01
+            - a.e31 * x.e0123
+            + a.e23 * x.e03
+            - a.e0123 * x.e31;
+        let w_e03 = a.s * x.e03 - a.e01 * x.e31 + a.e02 * x.e23 + a.e03 * x.s - a.e12 * x.e0123
+            + a.e31 * x.e01
+            - a.e23 * x.e02
+            - a.e0123 * x.e12;
+        let w_e12 = a.s * x.e12 + a.e12 * x.s + a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.s * x.e31 - a.e12 * x.e23 + a.e31 * x.s + a.e23 * x.e12;
+        let w_e23 = a.s * x.e23 + a.e12 * x.e31 - a.e31 * x.e12 + a.e23 * x.s;
+        let w_e0123 = a.s * x.e0123
+            + a.e01 * x.e23
+            + a.e02 * x.e31
+            + a.e03 * x.e12
+            + a.e12 * x.e03
+            + a.e31 * x.e02
+            + a.e23 * x.e01
+            + a.e0123 * x.s;
         Motor {
-            s: (s_s + e12_e12 + e31_e31 + e23_e23) * x.s,
-            e01: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e01
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e02
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e03
-                + ((e01_e12 + e01_e12) - (s_e02 + s_e02)
-                    + (e03_e23 + e03_e23)
-                    + (e31_e0123 + e31_e0123))
-                    * x.e12
-                + ((s_e03 + s_e03) + (e01_e31 + e01_e31) + (e02_e23 + e02_e23)
-                    - (e12_e0123 + e12_e0123))
-                    * x.e31
-                + ((e01_e23 + e01_e23)
-                    - (s_e0123 + s_e0123)
-                    - (e02_e31 + e02_e31)
-                    - (e03_e12 + e03_e12))
-                    * x.e23,
-            e02: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e01
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e02
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e03
-                + ((s_e01 + s_e01) + (e02_e12 + e02_e12) + (e03_e31 + e03_e31)
-                    - (e23_e0123 + e23_e0123))
-                    * x.e12
-                + ((e02_e31 + e02_e31)
-                    - (s_e0123 + s_e0123)
-                    - (e01_e23 + e01_e23)
-                    - (e03_e12 + e03_e12))
-                    * x.e31
-                + ((e01_e31 + e01_e31) - (s_e03 + s_e03)
-                    + (e02_e23 + e02_e23)
-                    + (e12_e0123 + e12_e0123))
-                    * x.e23,
-            e03: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e01
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e02
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e03
-                + ((e03_e12 + e03_e12)
-                    - (s_e0123 + s_e0123)
-                    - (e01_e23 + e01_e23)
-                    - (e02_e31 + e02_e31))
-                    * x.e12
-                + ((e02_e12 + e02_e12) - (s_e01 + s_e01)
-                    + (e03_e31 + e03_e31)
-                    + (e23_e0123 + e23_e0123))
-                    * x.e31
-                + ((s_e02 + s_e02) + (e01_e12 + e01_e12) + (e03_e23 + e03_e23)
-                    - (e31_e0123 + e31_e0123))
-                    * x.e23,
-            e12: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e12
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e31
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e23,
-            e31: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e12
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e31
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e23,
-            e23: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e12
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e31
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e23,
-            e0123: ((s_e0123 + s_e0123)
-                - (e01_e23 + e01_e23)
-                - (e02_e31 + e02_e31)
-                - (e03_e12 + e03_e12))
-                * x.s
-                + (s_s + e12_e12 + e31_e31 + e23_e23) * x.e0123,
+            s: w_s * a.s + w_e12 * a.e12 + w_e31 * a.e31 + w_e23 * a.e23,
+            e01: w_e01 * a.s - w_s * a.e01 + w_e02 * a.e12 - w_e03 * a.e31 - w_e12 * a.e02
+                + w_e31 * a.e03
+                - w_e23 * a.e0123
+                + w_e0123 * a.e23,
+            e02: w_e02 * a.s - w_s * a.e02 - w_e01 * a.e12 + w_e03 * a.e23 + w_e12 * a.e01
+                - w_e31 * a.e0123
+                - w_e23 * a.e03
+                + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_s * a.e03 - w_e02 * a.e23 + w_e03 * a.s
+                - w_e12 * a.e0123
+                - w_e31 * a.e01
+                + w_e23 * a.e02
+                + w_e0123 * a.e12,
+            e12: w_e12 * a.s - w_s * a.e12 - w_e31 * a.e23 + w_e23 * a.e31,
+            e31: w_e12 * a.e23 - w_s * a.e31 + w_e31 * a.s - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31 + w_e23 * a.s,
+            e0123: w_s * a.e0123
+                - w_e01 * a.e23
+                - w_e02 * a.e31
+                - w_e03 * a.e12
+                - w_e12 * a.e03
+                - w_e31 * a.e02
+                - w_e23 * a.e01
+                + w_e0123 * a.s,
         }
     }
 }
@@ -908,79 +686,32 @@ impl<T: Scalar> Sandwich<Rotor<T>> for Motor<T> {
     #[inline]
     fn sandwich(self, x: Rotor<T>) -> Motor<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e01 = a.s * a.e01;
-        let s_e02 = a.s * a.e02;
-        let s_e03 = a.s * a.e03;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let s_e0123 = a.s * a.e0123;
-        let e01_e12 = a.e01 * a.e12;
-        let e01_e31 = a.e01 * a.e31;
-        let e01_e23 = a.e01 * a.e23;
-        let e02_e12 = a.e02 * a.e12;
-        let e02_e31 = a.e02 * a.e31;
-        let e02_e23 = a.e02 * a.e23;
-        let e03_e12 = a.e03 * a.e12;
-        let e03_e31 = a.e03 * a.e31;
-        let e03_e23 = a.e03 * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e12_e0123 = a.e12 * a.e0123;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e31_e0123 = a.e31 * a.e0123;
-        let e23_e23 = a.e23 * a.e23;
-        let e23_e0123 = a.e23 * a.e0123;
+        let w_s = a.s * x.s - a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.e01 * x.s - a.e02 * x.e12 + a.e03 * x.e31 - a.e0123 * x.e23;
+        let w_e02 = a.e01 * x.e12 + a.e02 * x.s - a.e03 * x.e23 - a.e0123 * x.e31;
+        let w_e03 = a.e02 * x.e23 - a.e01 * x.e31 + a.e03 * x.s - a.e0123 * x.e12;
+        let w_e12 = a.s * x.e12 + a.e12 * x.s + a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.s * x.e31 - a.e12 * x.e23 + a.e31 * x.s + a.e23 * x.e12;
+        let w_e23 = a.s * x.e23 + a.e12 * x.e31 - a.e31 * x.e12 + a.e23 * x.s;
+        let w_e0123 = a.e01 * x.e23 + a.e02 * x.e31 + a.e03 * x.e12 + a.e0123 * x.s;
         Motor {
-            s: (s_s + e12_e12 + e31_e31 + e23_e23) * x.s,
-            e01: ((e01_e12 + e01_e12) - (s_e02 + s_e02)
-                + (e03_e23 + e03_e23)
-                + (e31_e0123 + e31_e0123))
-                * x.e12
-                + ((s_e03 + s_e03) + (e01_e31 + e01_e31) + (e02_e23 + e02_e23)
-                    - (e12_e0123 + e12_e0123))
-                    * x.e31
-                + ((e01_e23 + e01_e23)
-                    - (s_e0123 + s_e0123)
-                    - (e02_e31 + e02_e31)
-                    - (e03_e12 + e03_e12))
-                    * x.e23,
-            e02: ((s_e01 + s_e01) + (e02_e12 + e02_e12) + (e03_e31 + e03_e31)
-                - (e23_e0123 + e23_e0123))
-                * x.e12
-                + ((e02_e31 + e02_e31)
-                    - (s_e0123 + s_e0123)
-                    - (e01_e23 + e01_e23)
-                    - (e03_e12 + e03_e12))
-                    * x.e31
-                + ((e01_e31 + e01_e31) - (s_e03 + s_e03)
-                    + (e02_e23 + e02_e23)
-                    + (e12_e0123 + e12_e0123))
-                    * x.e23,
-            e03: ((e03_e12 + e03_e12)
-                - (s_e0123 + s_e0123)
-                - (e01_e23 + e01_e23)
-                - (e02_e31 + e02_e31))
-                * x.e12
-                + ((e02_e12 + e02_e12) - (s_e01 + s_e01)
-                    + (e03_e31 + e03_e31)
-                    + (e23_e0123 + e23_e0123))
-                    * x.e31
-                + ((s_e02 + s_e02) + (e01_e12 + e01_e12) + (e03_e23 + e03_e23)
-                    - (e31_e0123 + e31_e0123))
-                    * x.e23,
-            e12: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e12
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e31
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e23,
-            e31: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e12
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e31
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e23,
-            e23: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e12
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e31
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e23,
+            s: w_s * a.s + w_e12 * a.e12 + w_e31 * a.e31 + w_e23 * a.e23,
+            e01: w_e01 * a.s - w_s * a.e01 + w_e02 * a.e12 - w_e03 * a.e31 - w_e12 * a.e02
+                + w_e31 * a.e03
+                - w_e23 * a.e0123
+                + w_e0123 * a.e23,
+            e02: w_e02 * a.s - w_s * a.e02 - w_e01 * a.e12 + w_e03 * a.e23 + w_e12 * a.e01
+                - w_e31 * a.e0123
+                - w_e23 * a.e03
+                + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_s * a.e03 - w_e02 * a.e23 + w_e03 * a.s
+                - w_e12 * a.e0123
+                - w_e31 * a.e01
+                + w_e23 * a.e02
+                + w_e0123 * a.e12,
+            e12: w_e12 * a.s - w_s * a.e12 - w_e31 * a.e23 + w_e23 * a.e31,
+            e31: w_e12 * a.e23 - w_s * a.e31 + w_e31 * a.s - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31 + w_e23 * a.s,
             e0123: T::ZERO,
         }
     }
@@ -1023,27 +754,19 @@ impl<T: Scalar> Sandwich<Plane<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Plane<T>) -> Plane<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_e0 = a.s * x.e0;
+        let w_e1 = a.s * x.e1 + a.e12 * x.e2 - a.e31 * x.e3;
+        let w_e2 = a.s * x.e2 - a.e12 * x.e1 + a.e23 * x.e3;
+        let w_e3 = a.s * x.e3 + a.e31 * x.e1 - a.e23 * x.e2;
+        let w_e021 = -a.e12 * x.e0;
+        let w_e013 = -a.e31 * x.e0;
+        let w_e032 = -a.e23 * x.e0;
+        let w_e123 = a.e12 * x.e3 + a.e31 * x.e2 + a.e23 * x.e1;
         Plane {
-            e0: (s_s + e12_e12 + e31_e31 + e23_e23) * x.e0,
-            e1: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e1
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e2
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e3,
-            e2: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e1
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e2
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e3,
-            e3: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e1
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e2
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e3,
+            e0: w_e0 * a.s - w_e021 * a.e12 - w_e013 * a.e31 - w_e032 * a.e23,
+            e1: w_e1 * a.s + w_e2 * a.e12 - w_e3 * a.e31 + w_e123 * a.e23,
+            e2: w_e2 * a.s - w_e1 * a.e12 + w_e3 * a.e23 + w_e123 * a.e31,
+            e3: w_e1 * a.e31 - w_e2 * a.e23 + w_e3 * a.s + w_e123 * a.e12,
         }
     }
 }
@@ -1054,35 +777,21 @@ impl<T: Scalar> Sandwich<Line<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Line<T>) -> Line<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_s = -a.e12 * x.e12 - a.e31 * x.e31 - a.e23 * x.e23;
+        let w_e01 = a.s * x.e01 + a.e12 * x.e02 - a.e31 * x.e03;
+        let w_e02 = a.s * x.e02 - a.e12 * x.e01 + a.e23 * x.e03;
+        let w_e03 = a.s * x.e03 + a.e31 * x.e01 - a.e23 * x.e02;
+        let w_e12 = a.s * x.e12 + a.e31 * x.e23 - a.e23 * x.e31;
+        let w_e31 = a.s * x.e31 - a.e12 * x.e23 + a.e23 * x.e12;
+        let w_e23 = a.s * x.e23 + a.e12 * x.e31 - a.e31 * x.e12;
+        let w_e0123 = a.e12 * x.e03 + a.e31 * x.e02 + a.e23 * x.e01;
         Line {
-            e01: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e01
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e02
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e03,
-            e02: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e01
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e02
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e03,
-            e03: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e01
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e02
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e03,
-            e12: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e12
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e31
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e23,
-            e31: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e12
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e31
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e23,
-            e23: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e12
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e31
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e23,
+            e01: w_e01 * a.s + w_e02 * a.e12 - w_e03 * a.e31 + w_e0123 * a.e23,
+            e02: w_e02 * a.s - w_e01 * a.e12 + w_e03 * a.e23 + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_e02 * a.e23 + w_e03 * a.s + w_e0123 * a.e12,
+            e12: w_e12 * a.s - w_s * a.e12 - w_e31 * a.e23 + w_e23 * a.e31,
+            e31: w_e12 * a.e23 - w_s * a.e31 + w_e31 * a.s - w_e23 * a.e12,
+            e23: w_e31 * a.e12 - w_s * a.e23 - w_e12 * a.e31 + w_e23 * a.s,
         }
     }
 }
@@ -1093,27 +802,19 @@ impl<T: Scalar> Sandwich<Point<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Point<T>) -> Point<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_e0 = a.e12 * x.e021 + a.e31 * x.e013 + a.e23 * x.e032;
+        let w_e1 = -a.e23 * x.e123;
+        let w_e2 = -a.e31 * x.e123;
+        let w_e3 = -a.e12 * x.e123;
+        let w_e021 = a.s * x.e021 + a.e31 * x.e032 - a.e23 * x.e013;
+        let w_e013 = a.s * x.e013 - a.e12 * x.e032 + a.e23 * x.e021;
+        let w_e032 = a.s * x.e032 + a.e12 * x.e013 - a.e31 * x.e021;
+        let w_e123 = a.s * x.e123;
         Point {
-            e021: (s_s + e12_e12 - e31_e31 - e23_e23) * x.e021
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e013
-                + ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e032,
-            e013: ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e021
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e013
-                + ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e032,
-            e032: ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e021
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e013
-                + (s_s - e12_e12 - e31_e31 + e23_e23) * x.e032,
-            e123: (s_s + e12_e12 + e31_e31 + e23_e23) * x.e123,
+            e021: w_e0 * a.e12 + w_e021 * a.s - w_e013 * a.e23 + w_e032 * a.e31,
+            e013: w_e0 * a.e31 + w_e021 * a.e23 + w_e013 * a.s - w_e032 * a.e12,
+            e032: w_e0 * a.e23 - w_e021 * a.e31 + w_e013 * a.e12 + w_e032 * a.s,
+            e123: w_e123 * a.s - w_e1 * a.e23 - w_e2 * a.e31 - w_e3 * a.e12,
         }
     }
 }
@@ -1196,27 +897,19 @@ impl<T: Scalar> Sandwich<Translator<T>> for Rotor<T> {
     #[inline]
     fn sandwich(self, x: Translator<T>) -> Translator<T> {
         let a = self;
-        let s_s = a.s * a.s;
-        let s_e12 = a.s * a.e12;
-        let s_e31 = a.s * a.e31;
-        let s_e23 = a.s * a.e23;
-        let e12_e12 = a.e12 * a.e12;
-        let e12_e31 = a.e12 * a.e31;
-        let e12_e23 = a.e12 * a.e23;
-        let e31_e31 = a.e31 * a.e31;
-        let e31_e23 = a.e31 * a.e23;
-        let e23_e23 = a.e23 * a.e23;
+        let w_s = a.s * x.s;
+        let w_e01 = a.s * x.e01 + a.e12 * x.e02 - a.e31 * x.e03;
+        let w_e02 = a.s * x.e02 - a.e12 * x.e01 + a.e23 * x.e03;
+        let w_e03 = a.s * x.e03 + a.e31 * x.e01 - a.e23 * x.e02;
+        let w_e12 = a.e12 * x.s;
+        let w_e31 = a.e31 * x.s;
+        let w_e23 = a.e23 * x.s;
+        let w_e0123 = a.e12 * x.e03 + a.e31 * x.e02 + a.e23 * x.e01;
         Translator {
-            s: (s_s + e12_e12 + e31_e31 + e23_e23) * x.s,
-            e01: (s_s - e12_e12 - e31_e31 + e23_e23) * x.e01
-                + ((s_e12 + s_e12) + (e31_e23 + e31_e23)) * x.e02
-                + ((e12_e23 + e12_e23) - (s_e31 + s_e31)) * x.e03,
-            e02: ((e31_e23 + e31_e23) - (s_e12 + s_e12)) * x.e01
-                + (s_s - e12_e12 + e31_e31 - e23_e23) * x.e02
-                + ((s_e23 + s_e23) + (e12_e31 + e12_e31)) * x.e03,
-            e03: ((s_e31 + s_e31) + (e12_e23 + e12_e23)) * x.e01
-                + ((e12_e31 + e12_e31) - (s_e23 + s_e23)) * x.e02
-                + (s_s + e12_e12 - e31_e31 - e23_e23) * x.e03,
+            s: w_s * a.s + w_e12 * a.e12 + w_e31 * a.e31 + w_e23 * a.e23,
+            e01: w_e01 * a.s + w_e02 * a.e12 - w_e03 * a.e31 + w_e0123 * a.e23,
+            e02: w_e02 * a.s - w_e01 * a.e12 + w_e03 * a.e23 + w_e0123 * a.e31,
+            e03: w_e01 * a.e31 - w_e02 * a.e23 + w_e03 * a.s + w_e0123 * a.e12,
         }
     }
 }
