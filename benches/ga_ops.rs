@@ -552,6 +552,14 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                 core::array::from_fn(|i| $pga[i].points.0),
                 core::array::from_fn(|i| $affine[i].points.0),
             );
+            // glam's side of the one-motor-many-points rows (PGA's and CGA's).
+            let affine_points = typed($affine, move |a| {
+                let mut moved = vectors;
+                for p in &mut moved {
+                    *p = a.maps.0.$transform(*p);
+                }
+                moved
+            });
             pair!(
                 "pga_motor_points_vs_affine_points",
                 $precision,
@@ -563,13 +571,7 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                     moved
                 },
                 $affine,
-                move |a| {
-                    let mut moved = vectors;
-                    for p in &mut moved {
-                        *p = a.maps.0.$transform(*p);
-                    }
-                    moved
-                }
+                |a| affine_points(a)
             );
             pair!(
                 "pga_motor_mul_vs_affine_mul",
@@ -618,8 +620,8 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                 $affine,
                 |a| a.maps.0.$transform(a.points.0)
             );
-            // The same with the CGA map: five sandwiches a call, then a 4x4 product, an
-            // addition and a division by the weight a point.
+            // The same with the CGA map (`Motor::vector_map`) once a call, then a 4x4 product,
+            // an addition and a division by the weight a point.
             let xs: [_; POINTS] = core::array::from_fn(|i| $cga[i].x);
             pair!(
                 "cga_motor_points_vs_affine_points",
@@ -632,13 +634,7 @@ fn run_all(c: &mut Criterion<ThreadClock>, x: &Inputs) -> Vec<Spec> {
                     moved
                 },
                 $affine,
-                move |a| {
-                    let mut moved = vectors;
-                    for p in &mut moved {
-                        *p = a.maps.0.$transform(*p);
-                    }
-                    moved
-                }
+                |a| affine_points(a)
             );
             pair!(
                 "cga_motor_mul_vs_affine_mul",
