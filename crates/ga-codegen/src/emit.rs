@@ -174,11 +174,7 @@ impl Resolved<'_> {
         if out.is_empty() {
             return None;
         }
-        let vb = &self.type_blades[tv];
-        let mono = |pi: usize, pk: usize| {
-            let f = |p: usize| self.blades[vb[p]].field.clone();
-            format!("{}_{}", f(pi), f(pk))
-        };
+        let mono = |pi: usize, pk: usize| self.pair_name(tv, pi, pk);
         let mut used: Vec<(usize, usize)> = Vec::new();
         let mut exprs = BTreeMap::new();
         for (&m, terms) in &out {
@@ -202,17 +198,31 @@ impl Resolved<'_> {
                 .collect();
             exprs.insert(m, sum(outer));
         }
-        used.sort_unstable();
-        let mut body = String::new();
-        for (pi, pk) in used {
-            let (ai, ak) = (self.access("a", tv, pi), self.access("a", tv, pk));
-            writeln!(body, "let {} = {ai} * {ak};", mono(pi, pk)).expect("writing to a String");
-        }
+        let mut body = self.pair_products(tv, used);
         let needed: Vec<usize> = out.keys().copied().collect();
         let ty = self.smallest_type(&needed);
         body.push_str(&self.construct(ty, &exprs));
         let steps = self.sandwich_in_two_steps(geo, tv, tx, ty, &needed);
         Some((ty, if operations(&steps) < operations(&body) { steps } else { body }))
+    }
+
+    /// The name of the product `a_i a_k` of the coefficients at positions `pi` and `pk` of
+    /// versor type `tv`, as the collected sandwich and the sandwich map write it.
+    fn pair_name(&self, tv: usize, pi: usize, pk: usize) -> String {
+        let field = |p: usize| &self.blades[self.type_blades[tv][p]].field;
+        format!("{}_{}", field(pi), field(pk))
+    }
+
+    /// The statements forming each product `a_i a_k` of `pairs` once, in position order.
+    fn pair_products(&self, tv: usize, mut pairs: Vec<(usize, usize)>) -> String {
+        pairs.sort_unstable();
+        let mut body = String::new();
+        for (pi, pk) in pairs {
+            let (ai, ak) = (self.access("a", tv, pi), self.access("a", tv, pk));
+            writeln!(body, "let {} = {ai} * {ak};", self.pair_name(tv, pi, pk))
+                .expect("writing to a String");
+        }
+        body
     }
 
     /// The triple sum of the sandwich `v x ṽ` with its like terms collected, keeping the grades
@@ -252,12 +262,11 @@ impl Resolved<'_> {
     /// entry the collected quadratic form of the triple sum.
     fn sandwich_map(&self, geo: &[Vec<(usize, i32)>], tv: usize, tx: usize) -> String {
         let out = self.sandwich_terms(geo, tv, tx);
-        let (vb, xb) = (&self.type_blades[tv], &self.type_blades[tx]);
+        let xb = &self.type_blades[tx];
         assert!(
             out.keys().all(|m| xb.contains(m)),
             "a sandwich map needs an operand type that holds its image"
         );
-        let f = |p: usize| self.blades[vb[p]].field.clone();
         let mut pairs: Vec<(usize, usize)> = Vec::new();
         let mut rows = Vec::new();
         for m in xb {
@@ -266,18 +275,13 @@ impl Resolved<'_> {
                 if !pairs.contains(&(pi, pk)) {
                     pairs.push((pi, pk));
                 }
-                entries[px].push(Term { coef, text: format!("{}_{}", f(pi), f(pk)) });
+                entries[px].push(Term { coef, text: self.pair_name(tv, pi, pk) });
             }
             let entries: Vec<String> = entries.into_iter().map(sum).collect();
             rows.push(format!("[{}]", entries.join(", ")));
         }
-        pairs.sort_unstable();
         let (n, v, x) = (xb.len(), self.spec.types[tv].name, self.spec.types[tx].name);
-        let mut body = String::new();
-        for (pi, pk) in pairs {
-            let (ai, ak) = (self.access("a", tv, pi), self.access("a", tv, pk));
-            writeln!(body, "let {}_{} = {ai} * {ak};", f(pi), f(pk)).expect("writing to a String");
-        }
+        let body = self.pair_products(tv, pairs);
         format!(
             "impl<T: Scalar> {v}<T> {{\n    \
              /// The sandwich `x ↦ v x ṽ` on a [`{x}`] as a matrix:\n    \
