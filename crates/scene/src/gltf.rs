@@ -468,7 +468,9 @@ fn accessor_bytes<'b>(
     let offset = accessor.offset() as u64;
     let end = match count {
         0 => offset,
-        _ => offset.saturating_add((count - 1).saturating_mul(stride as u64)) + element as u64,
+        _ => offset
+            .saturating_add((count - 1).saturating_mul(stride as u64))
+            .saturating_add(element as u64),
     };
     if end > len {
         return Err(format!(
