@@ -174,16 +174,13 @@ impl Resolved<'_> {
         if out.is_empty() {
             return None;
         }
-        let mono = |pi: usize, pk: usize| self.pair_name(tv, pi, pk);
         let mut used: Vec<(usize, usize)> = Vec::new();
         let mut exprs = BTreeMap::new();
         for (&m, terms) in &out {
             let mut by_x: BTreeMap<usize, Vec<Term>> = BTreeMap::new();
             for (&(px, pi, pk), &coef) in terms {
-                if !used.contains(&(pi, pk)) {
-                    used.push((pi, pk));
-                }
-                by_x.entry(px).or_default().push(Term { coef, text: mono(pi, pk) });
+                used.push((pi, pk));
+                by_x.entry(px).or_default().push(Term { coef, text: self.pair_name(tv, pi, pk) });
             }
             let outer: Vec<Term> = by_x
                 .into_iter()
@@ -213,9 +210,11 @@ impl Resolved<'_> {
         format!("{}_{}", field(pi), field(pk))
     }
 
-    /// The statements forming each product `a_i a_k` of `pairs` once, in position order.
+    /// The statements forming each product `a_i a_k` of `pairs` once (repeats dropped), in
+    /// position order.
     fn pair_products(&self, tv: usize, mut pairs: Vec<(usize, usize)>) -> String {
         pairs.sort_unstable();
+        pairs.dedup();
         let mut body = String::new();
         for (pi, pk) in pairs {
             let (ai, ak) = (self.access("a", tv, pi), self.access("a", tv, pk));
@@ -272,9 +271,7 @@ impl Resolved<'_> {
         for m in xb {
             let mut entries: Vec<Vec<Term>> = (0..xb.len()).map(|_| Vec::new()).collect();
             for (&(px, pi, pk), &coef) in out.get(m).into_iter().flatten() {
-                if !pairs.contains(&(pi, pk)) {
-                    pairs.push((pi, pk));
-                }
+                pairs.push((pi, pk));
                 entries[px].push(Term { coef, text: self.pair_name(tv, pi, pk) });
             }
             let entries: Vec<String> = entries.into_iter().map(sum).collect();
