@@ -12,6 +12,8 @@ mod sealed {
         fn rotor_reverse(a: [Self; 4]) -> [Self; 4];
         /// `Σ_k columns[k] p[k]`: a 4×4 matrix, by columns, times a 4-vector.
         fn map_point(columns: &[[Self; 4]; 4], p: [Self; 4]) -> [Self; 4];
+        /// `y = offset + Σ_k columns[k] p[k]`, and `y`'s first three lanes divided by its last.
+        fn map_down(columns: &[[Self; 4]; 4], offset: [Self; 4], p: [Self; 4]) -> [Self; 3];
         /// The geometric product of two R(3,0,1) multivectors, coefficients in basis order.
         fn pga_geometric(a: &[Self; 16], b: &[Self; 16]) -> [Self; 16];
         /// The geometric product of two R(4,1) multivectors, coefficients in basis order.
@@ -69,6 +71,13 @@ impl sealed::Kernels for f32 {
         with_simd!(crate::pga::simd::map_point_f32(columns, p), portable_map_point(columns, p))
     }
     #[inline]
+    fn map_down(columns: &[[f32; 4]; 4], offset: [f32; 4], p: [f32; 4]) -> [f32; 3] {
+        with_simd!(
+            crate::cga::simd::map_down_f32(columns, offset, p),
+            portable_map_down(columns, offset, p)
+        )
+    }
+    #[inline]
     fn pga_geometric(a: &[f32; 16], b: &[f32; 16]) -> [f32; 16] {
         with_simd!(
             crate::pga::generated::lanes::geometric_f32(a, b),
@@ -103,6 +112,13 @@ impl sealed::Kernels for f64 {
         with_simd!(crate::pga::simd::map_point_f64(columns, p), portable_map_point(columns, p))
     }
     #[inline]
+    fn map_down(columns: &[[f64; 4]; 4], offset: [f64; 4], p: [f64; 4]) -> [f64; 3] {
+        with_simd!(
+            crate::cga::simd::map_down_f64(columns, offset, p),
+            portable_map_down(columns, offset, p)
+        )
+    }
+    #[inline]
     fn pga_geometric(a: &[f64; 16], b: &[f64; 16]) -> [f64; 16] {
         with_simd!(
             crate::pga::generated::lanes::geometric_f64(a, b),
@@ -116,6 +132,21 @@ impl sealed::Kernels for f64 {
             crate::cga::geometric::blockwise(a, b)
         )
     }
+}
+
+#[allow(dead_code)] // unused when every precision has a SIMD kernel
+#[inline]
+fn portable_map_down<T: Scalar>(c: &[[T; 4]; 4], o: [T; 4], p: [T; 4]) -> [T; 3] {
+    let y: [T; 4] = core::array::from_fn(|l| {
+        c[3][l].mul_add_if_fma(
+            p[3],
+            c[2][l].mul_add_if_fma(
+                p[2],
+                c[1][l].mul_add_if_fma(p[1], c[0][l].mul_add_if_fma(p[0], o[l])),
+            ),
+        )
+    });
+    [y[0] / y[3], y[1] / y[3], y[2] / y[3]]
 }
 
 #[allow(dead_code)] // unused when every precision has a SIMD kernel

@@ -91,6 +91,8 @@
 pub(crate) mod generated;
 pub(crate) mod geometric;
 pub mod geometry;
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
+pub(crate) mod simd;
 
 pub use generated::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,

@@ -184,10 +184,11 @@ impl<T: Scalar> Motor<T> {
     /// `up(x) = (x₁, x₂, x₃, h - ½, h + ½)` with `h = ½x²`, so the image is
     /// `Σᵢ xᵢ cᵢ + h (c₄ + c₅) + ½ (c₅ - c₄)` with `cⱼ` the columns of `m`. Only the Euclidean
     /// part and the weight (`e5 - e4`) of the image are needed, so each column is four numbers
-    /// and a point costs `h`, one 4×4 matrix-vector product (PGA's point kernel), one addition
-    /// and the division by the weight. This holds for every even versor, those that move `e∞`
-    /// too (the product of two sphere inversions): the weight then depends on the point, which
-    /// the division per point takes care of.
+    /// and a point costs `h`, one 4×4 matrix-vector product whose chain starts from the offset
+    /// `½ (c₅ - c₄)`, and the division by the weight (one 4-lane division, see `cga::simd`).
+    /// This holds for every even versor, those that move `e∞` too (the product of two sphere
+    /// inversions): the weight then depends on the point, which the division per point takes
+    /// care of.
     pub fn transform_points(self, points: &mut [g3::Vector<T>]) {
         let m = self.vector_map();
         let column = |j: usize| [m[0][j], m[1][j], m[2][j], m[4][j] - m[3][j]];
@@ -196,13 +197,8 @@ impl<T: Scalar> Motor<T> {
         let origin: [T; 4] = core::array::from_fn(|i| T::HALF * (c5[i] - c4[i]));
         for p in points {
             let h = T::HALF * (p.e1 * p.e1 + p.e2 * p.e2 + p.e3 * p.e3);
-            let y = T::map_point(&columns, [p.e1, p.e2, p.e3, h]);
-            let w = y[3] + origin[3];
-            *p = g3::Vector::new(
-                (y[0] + origin[0]) / w,
-                (y[1] + origin[1]) / w,
-                (y[2] + origin[2]) / w,
-            );
+            let [x1, x2, x3] = T::map_down(&columns, origin, [p.e1, p.e2, p.e3, h]);
+            *p = g3::Vector::new(x1, x2, x3);
         }
     }
 }
