@@ -56,6 +56,9 @@ use crate::traverse::{AnyLeaf, ClosestLeaf};
 /// Rays per batch of the packet queries (a multiple of [`crate::PACKET`]: a 16 x 16 tile).
 const BATCH: usize = 256;
 
+/// Rays of a packet handed to [`Intersector::intersect_group`] together at a leaf.
+const GROUP: usize = 16;
+
 /// Scenes with at least this many triangles prepare them in parallel.
 const PARALLEL_PREPARE: usize = 16384;
 
@@ -287,12 +290,52 @@ impl<I: Intersector> Accel<I> {
             let mut data: [Option<I::RayData>; BATCH] = [None; BATCH];
             let mut limits = [t_max; BATCH];
             let limits = &mut limits[..rays.len()];
-            self.bvh.closest_packet(rays, limits, |slots, i, limit| {
-                let ray = &rays[i];
-                let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
-                self.closest_in_leaf(slots, ray, &data, limit, |_| true, &mut out[i]);
+            self.bvh.closest_packet(rays, limits, |slots, members, limits| {
+                let (first, order) = (slots.start, self.bvh.order());
+                let prims = &self.prims[slots];
+                for group in members.chunks(GROUP) {
+                    let (group_rays, group_data) = self.gather(rays, &mut data, group);
+                    let at = |j: usize| group[j.min(group.len() - 1)];
+                    let mut group_limits: [I::Real; GROUP] =
+                        core::array::from_fn(|j| limits[at(j)]);
+                    let n = group.len();
+                    self.intersector.intersect_group(
+                        prims,
+                        &group_rays[..n],
+                        &group_data[..n],
+                        &mut group_limits[..n],
+                        &mut |r, k, h, limit| {
+                            // As `closest_in_leaf` keeps the nearest hit of one ray.
+                            let hit = Hit::new(order[first + k], h);
+                            let best = &mut out[group[r]];
+                            if best.is_none_or(|b| hit.nearer_than(&b)) {
+                                *best = Some(hit);
+                                *limit = hit.t;
+                            }
+                        },
+                    );
+                    for (&i, &l) in group.iter().zip(&group_limits) {
+                        limits[i] = l;
+                    }
+                }
             });
         }
+    }
+
+    /// The rays `group` (positions in `rays`, at most [`GROUP`]) and their prepared data in
+    /// contiguous arrays, preparing those not prepared yet; short groups are padded with
+    /// their last ray, whose copies are not handed over.
+    #[inline(always)]
+    fn gather(
+        &self,
+        rays: &[Ray<I::Real>],
+        data: &mut [Option<I::RayData>; BATCH],
+        group: &[usize],
+    ) -> ([Ray<I::Real>; GROUP], [I::RayData; GROUP]) {
+        let at = |j: usize| group[j.min(group.len() - 1)];
+        let mut prepared =
+            |i: usize| *data[i].get_or_insert_with(|| self.intersector.prepare_ray(&rays[i]));
+        (core::array::from_fn(|j| rays[at(j)]), core::array::from_fn(|j| prepared(at(j))))
     }
 
     /// [`Accel::any_hit`] for every ray of `rays` with the same `t_max`, into `out`: the same

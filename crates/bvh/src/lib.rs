@@ -70,7 +70,9 @@
 //! by the signs of their directions, walk the tree together. A node is tested once per packet,
 //! against an interval bound of its rays (their origins' and inverse directions' ranges per
 //! axis), which is conservative for every ray's own rounded box test; at a leaf each ray runs
-//! the single-ray box test and, if it passes, its kernel on the leaf's triangles. The hits are
+//! the single-ray box test, and the rays that pass meet the leaf's triangles together (for
+//! closest hits through [`intersect::Intersector::intersect_group`], which a kernel may run
+//! several rays at a time, in groups of up to 16 of one leaf visit). The hits are
 //! those of single rays, ties included (the `packet` module's docs give the argument; the
 //! tests check it on every back end). Coherent rays (a block of pixels from one eye) share
 //! most of their nodes, so the packet pays one node test where single rays pay one each;
@@ -422,19 +424,19 @@ impl<T: Real> Bvh<T> {
     /// together (see [Packets](self#packets)). `rays` are cut into chunks of [`PACKET`] in the
     /// order given, so neighbours should be coherent (an 8 x 8 block of pixels from one eye).
     ///
-    /// `leaf` gets a range of slots, the position of a ray in `rays` and that ray's limit,
-    /// which it lowers when it finds a nearer hit; `limits` holds each ray's `t_max` on entry
-    /// and its last limit on return. Every ray is offered every leaf that
-    /// [`Bvh::closest`] could offer it, and maybe more, in another order: a caller that keeps
-    /// the nearest hit under a total order (as [`Accel`](accel::Accel) does) gets the
-    /// single-ray answers.
+    /// `leaf` gets a range of slots, the positions in `rays` of the rays that reach it
+    /// (ascending), and `limits`, whose entries for those rays it lowers when it finds nearer
+    /// hits; `limits` holds each ray's `t_max` on entry and its last limit on return. Every
+    /// ray is offered every leaf that [`Bvh::closest`] could offer it, and maybe more, in
+    /// another order: a caller that keeps the nearest hit under a total order (as
+    /// [`Accel`](accel::Accel) does) gets the single-ray answers.
     ///
     /// # Panics
     ///
     /// If `rays` and `limits` differ in length.
     pub fn closest_packet<F>(&self, rays: &[Ray<T>], limits: &mut [T], leaf: F)
     where
-        F: FnMut(Range<usize>, usize, &mut T),
+        F: FnMut(Range<usize>, &[usize], &mut [T]),
     {
         if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
             packet::closest::<f32, T, F>(&self.nodes, rays, limits, leaf);

@@ -113,6 +113,21 @@ impl<S: Lane + From<f32>> Group<S> {
         g
     }
 
+    /// The lanes of the mask `rays`, their rays' positions in the caller's slice, and how
+    /// many: what a leaf gets, so that the kernel may test several rays at once.
+    #[inline(always)]
+    fn members(&self, rays: u64) -> ([usize; PACKET], [usize; PACKET], usize) {
+        let (mut lanes, mut members) = ([0; PACKET], [0; PACKET]);
+        let (mut n, mut left) = (0, rays);
+        while left != 0 {
+            lanes[n] = left.trailing_zeros() as usize;
+            members[n] = self.index[lanes[n]];
+            left &= left - 1;
+            n += 1;
+        }
+        (lanes, members, n)
+    }
+
     /// The largest limit of the live rays (NaN limits ignored: such a ray meets nothing).
     #[inline(always)]
     fn max_limit(&self) -> S {
@@ -273,7 +288,7 @@ pub fn closest<S, T, F>(nodes: &[Node], rays: &[Ray<T>], limits: &mut [T], mut l
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>, usize, &mut T),
+    F: FnMut(Range<usize>, &[usize], &mut [T]),
 {
     assert_eq!(rays.len(), limits.len(), "one limit per ray");
     if nodes.is_empty() {
@@ -286,18 +301,16 @@ where
             closest_group(nodes, &mut g, &mut stack, limits, &mut leaf);
         }
         Work::Single(i) => {
-            let mut last = limits[i];
             traverse::closest::<S, T, _>(
                 traverse::Baseline,
                 nodes,
                 &rays[i],
                 limits[i],
                 |slots: Range<usize>, l: &mut T| {
-                    leaf(slots, i, l);
-                    last = *l;
+                    leaf(slots, &[i], limits);
+                    *l = limits[i];
                 },
             );
-            limits[i] = last;
         }
     });
 }
@@ -312,7 +325,7 @@ fn closest_group<S, T, F>(
 ) where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>, usize, &mut T),
+    F: FnMut(Range<usize>, &[usize], &mut [T]),
 {
     stack.clear();
     let mut limit = g.max_limit();
@@ -321,21 +334,23 @@ fn closest_group<S, T, F>(
     let mut current = 0u32;
     loop {
         if is_leaf(current) {
-            let (slots, mut rays) = g.leaf_at(nodes, current);
-            let mut lowered = false;
-            while rays != 0 {
-                let r = rays.trailing_zeros() as usize;
-                rays &= rays - 1;
-                let i = g.index[r];
-                leaf(slots.clone(), i, &mut limits[i]);
-                let now: S = to_lane(limits[i]);
-                if now != g.limit[r] {
-                    g.limit[r] = now;
-                    lowered = true;
+            let (slots, rays) = g.leaf_at(nodes, current);
+            if rays != 0 {
+                // The rays that reach the leaf, handed over together (their positions in the
+                // caller's slice), so that the kernel may test several at once.
+                let (lanes, members, n) = g.members(rays);
+                leaf(slots, &members[..n], limits);
+                let mut lowered = false;
+                for (&r, &i) in lanes[..n].iter().zip(&members[..n]) {
+                    let now: S = to_lane(limits[i]);
+                    if now != g.limit[r] {
+                        g.limit[r] = now;
+                        lowered = true;
+                    }
                 }
-            }
-            if lowered {
-                limit = g.max_limit();
+                if lowered {
+                    limit = g.max_limit();
+                }
             }
         } else {
             let node = &nodes[current as usize];

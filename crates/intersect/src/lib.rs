@@ -336,6 +336,29 @@ pub trait Intersector: Sync + Send {
         t_max: Self::Real,
     ) -> Option<TriangleHit<Self::Real>>;
 
+    /// [`Intersector::intersect`] of each of `prims` in turn with each ray of a group: ray `r`
+    /// is `rays[r]`, prepared as `data[r]`, searching within `limits[r]`. For every hit,
+    /// `found(r, k, hit, &mut limits[r])`, `k` the triangle's position in `prims`; `found` may
+    /// lower the limit before the ray meets the next triangle. Each ray sees exactly the calls
+    /// of its own loop over `prims`, in order, so every hit is the one `intersect` reports.
+    ///
+    /// The default is that loop. A kernel may override it to test several rays at once (the
+    /// leaf stage of the BVH's packet traversal), with the same hits bit for bit, ties and
+    /// limits included (`conformance::check_group` tests this).
+    #[inline]
+    fn intersect_group<F>(
+        &self,
+        prims: &[Self::Prim],
+        rays: &[Ray<Self::Real>],
+        data: &[Self::RayData],
+        limits: &mut [Self::Real],
+        found: &mut F,
+    ) where
+        F: FnMut(usize, usize, TriangleHit<Self::Real>, &mut Self::Real),
+    {
+        one_ray_at_a_time(self, prims, rays, data, limits, found);
+    }
+
     /// Whether `ray` hits the triangle with `0 < t <= t_max` (any-hit queries, shadows,
     /// alpha masks). The default calls [`Intersector::intersect`].
     #[inline(always)]
@@ -347,6 +370,29 @@ pub trait Intersector: Sync + Send {
         t_max: Self::Real,
     ) -> bool {
         self.intersect(prim, ray, ray_data, t_max).is_some()
+    }
+}
+
+/// [`Intersector::intersect_group`] as its default: each triangle in turn with each ray in
+/// turn. For kernels that override it and keep this loop for the groups they do not take.
+#[inline]
+pub fn one_ray_at_a_time<I, F>(
+    kernel: &I,
+    prims: &[I::Prim],
+    rays: &[Ray<I::Real>],
+    data: &[I::RayData],
+    limits: &mut [I::Real],
+    found: &mut F,
+) where
+    I: Intersector + ?Sized,
+    F: FnMut(usize, usize, TriangleHit<I::Real>, &mut I::Real),
+{
+    for (k, prim) in prims.iter().enumerate() {
+        for (r, (ray, data)) in rays.iter().zip(data).enumerate() {
+            if let Some(hit) = kernel.intersect(prim, ray, data, limits[r]) {
+                found(r, k, hit, &mut limits[r]);
+            }
+        }
     }
 }
 

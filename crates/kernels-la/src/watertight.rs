@@ -84,6 +84,20 @@
 //!   would miss its own hit and ties between triangles would depend on traversal order.
 //! - NaN anywhere fails every comparison that accepts, so it is a miss; no branch can panic
 //!   (the axis indices are always in `0..3`).
+//!
+//! # Several rays at once
+//!
+//! [`Intersector::intersect_group`] (the leaf stage of packet traversal) runs steps 2-8 for
+//! [`LANES`] rays at a time against one triangle, one ray per lane of plain arrays that the
+//! compiler vectorises (AVX2: eight `f32` lanes in one register). The rays of a block share
+//! their permutation `k` (a block is formed per permutation; coherent rays mostly share one),
+//! so the triangle's rows are picked once and broadcast. Each lane computes every value with
+//! the operations of the single-ray code in the same order: `z = v - o_z`,
+//! `x = (v - o_x) - z Sx`, the edge functions `next.x * this.y - next.y * this.x`,
+//! `det = (W + U) + V` and `T = (W C'z + U A'z) + V B'z` (glam's `element_sum` and `dot`
+//! order), the same slack and the same final division. So its hits are those of
+//! [`Intersector::intersect`], bit for bit. A lane with an exactly zero edge function (step 4,
+//! the exact fallback and the tie rule) is handed to `intersect` itself.
 
 use core::marker::PhantomData;
 
@@ -253,6 +267,187 @@ impl<T: GlamReal> Intersector for Watertight<T> {
             u: weight_b * inv_det,
             v: weight_c * inv_det,
         })
+    }
+
+    /// Blocks of up to [`LANES`] rays that share a permutation, each tested lane-wise against
+    /// every triangle in turn (see [Several rays at once](self#several-rays-at-once)).
+    #[inline]
+    fn intersect_group<F>(
+        &self,
+        prims: &[WatertightPrim<T>],
+        rays: &[Ray<T>],
+        data: &[WatertightRay<T>],
+        limits: &mut [T],
+        found: &mut F,
+    ) where
+        F: FnMut(usize, usize, TriangleHit<T>, &mut T),
+    {
+        if rays.len() < 2 {
+            return intersect::one_ray_at_a_time(self, prims, rays, data, limits, found);
+        }
+        // At most 64 rays at a time: a mask of 64 bits holds the rays still to place.
+        for start in (0..rays.len()).step_by(64) {
+            let end = (start + 64).min(rays.len());
+            let mut left: u64 = if end - start == 64 { u64::MAX } else { (1 << (end - start)) - 1 };
+            while left != 0 {
+                let k = data[start + left.trailing_zeros() as usize].k;
+                let mut members = [0; LANES];
+                let mut n = 0;
+                let mut scan = left;
+                while scan != 0 && n < LANES {
+                    let r = scan.trailing_zeros() as usize;
+                    scan &= scan - 1;
+                    if data[start + r].k == k {
+                        members[n] = start + r;
+                        n += 1;
+                        left &= !(1 << r);
+                    }
+                }
+                let block = Block::new(data, members, n);
+                self.block(&block, k, prims, rays, data, limits, found);
+            }
+        }
+    }
+}
+
+impl<T: GlamReal> Watertight<T> {
+    /// One block of [`Intersector::intersect_group`]: every triangle in turn against the
+    /// block's lanes, reporting each lane's hit in order of its ray.
+    #[allow(clippy::too_many_arguments)] // the group's parts, as the trait hands them over
+    #[inline(always)]
+    fn block<F>(
+        &self,
+        block: &Block<T>,
+        k: [u8; 3],
+        prims: &[WatertightPrim<T>],
+        rays: &[Ray<T>],
+        data: &[WatertightRay<T>],
+        limits: &mut [T],
+        found: &mut F,
+    ) where
+        F: FnMut(usize, usize, TriangleHit<T>, &mut T),
+    {
+        let [kx, ky, kz] = k.map(usize::from);
+        let (members, n) = (&block.members, block.n);
+        let live = (1u32 << n) - 1;
+        let (mut e, mut z, mut out) =
+            ([[T::ZERO; LANES]; 3], [[T::ZERO; LANES]; 3], [[T::ZERO; LANES]; 3]);
+        for (p, prim) in prims.iter().enumerate() {
+            let rows = [kx, ky, kz].map(|a| T::lanes(prim.axes[a]));
+            let (candidates, zeros) = block.edges(rows, &mut e, &mut z);
+            let mut hits = 0;
+            if candidates & live != 0 {
+                let lane_limits: [T; LANES] =
+                    core::array::from_fn(|l| limits[members[l.min(n - 1)]]);
+                hits = block.distances(&e, &z, &lane_limits, &mut out) & candidates;
+            }
+            let mut report = (hits | zeros) & live;
+            while report != 0 {
+                let l = report.trailing_zeros() as usize;
+                report &= report - 1;
+                let r = members[l];
+                let hit = if zeros >> l & 1 == 1 {
+                    self.intersect(prim, &rays[r], &data[r], limits[r])
+                } else {
+                    Some(TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] })
+                };
+                if let Some(hit) = hit {
+                    found(r, p, hit, &mut limits[r]);
+                }
+            }
+        }
+    }
+}
+
+/// Rays per block of [`Intersector::intersect_group`] for [`Watertight`].
+pub const LANES: usize = 16;
+
+/// The lanes of one block of [`Watertight::intersect_group`]: rays `members[..n]` of the
+/// group, which share the permutation `k`, as structure of arrays (lanes past `n` repeat the
+/// last ray and are never reported).
+struct Block<T> {
+    n: usize,
+    members: [usize; LANES],
+    origin: [[T; LANES]; 3],
+    shear: [[T; LANES]; 3],
+}
+
+impl<T: GlamReal> Block<T> {
+    fn new(data: &[WatertightRay<T>], members: [usize; LANES], n: usize) -> Self {
+        let at = |l: usize| &data[members[l.min(n - 1)]];
+        Block {
+            n,
+            members,
+            origin: core::array::from_fn(|a| core::array::from_fn(|l| at(l).origin[a])),
+            shear: core::array::from_fn(|a| core::array::from_fn(|l| at(l).shear[a])),
+        }
+    }
+
+    /// Steps 2, 3 and 5 for every lane against the triangle whose vertices, in the block's
+    /// permuted axes, are `rows = [xs, ys, zs]`: the edge functions `(W, U, V)` into `e`, the
+    /// sheared `z` of the three vertices into `z`, and two masks of lanes: those whose edge
+    /// functions are nonzero with one sign (candidates), and those with an exact zero.
+    #[inline(always)]
+    fn edges(
+        &self,
+        rows: [[T; 3]; 3],
+        e: &mut [[T; LANES]; 3],
+        z: &mut [[T; LANES]; 3],
+    ) -> (u32, u32) {
+        let [xs, ys, zs] = rows;
+        let (mut candidates, mut zeros) = (0, 0);
+        for l in 0..LANES {
+            let [ox, oy, oz] = [self.origin[0][l], self.origin[1][l], self.origin[2][l]];
+            let [sx, sy] = [self.shear[0][l], self.shear[1][l]];
+            let zl = zs.map(|v| v - oz);
+            let x = [0, 1, 2].map(|i| (xs[i] - ox) - zl[i] * sx);
+            let y = [0, 1, 2].map(|i| (ys[i] - oy) - zl[i] * sy);
+            let w = x[1] * y[0] - y[1] * x[0];
+            let u = x[2] * y[1] - y[2] * x[1];
+            let v = x[0] * y[2] - y[0] * x[2];
+            // Signs as the single-ray test reads them; a NaN lane misses either way.
+            let negative = [w, u, v].map(|f| f < T::ZERO);
+            let same = negative[0] == negative[1] && negative[1] == negative[2];
+            let zero = w == T::ZERO || u == T::ZERO || v == T::ZERO;
+            candidates |= u32::from(same && !zero) << l;
+            zeros |= u32::from(zero) << l;
+            (e[0][l], e[1][l], e[2][l]) = (w, u, v);
+            (z[0][l], z[1][l], z[2][l]) = (zl[0], zl[1], zl[2]);
+        }
+        (candidates, zeros)
+    }
+
+    /// Steps 6-8 for every lane, from [`Self::edges`]' values, within `limits`: the mask of
+    /// lanes that hit (meaningful on the candidates), their `t`, `u`, `v` in `out`.
+    #[inline(always)]
+    fn distances(
+        &self,
+        e: &[[T; LANES]; 3],
+        z: &[[T; LANES]; 3],
+        limits: &[T; LANES],
+        out: &mut [[T; LANES]; 3],
+    ) -> u32 {
+        let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
+        let mut hits = 0;
+        for l in 0..LANES {
+            let (w, u, v, sz) = (e[0][l], e[1][l], e[2][l], self.shear[2][l]);
+            let det = (w + u) + v;
+            let t_scaled = (w * (z[2][l] * sz) + u * (z[0][l] * sz)) + v * (z[1][l] * sz);
+            let (t_signed, det_abs) =
+                if det < T::ZERO { (-t_scaled, -det) } else { (t_scaled, det) };
+            let limit = limits[l];
+            let inv_det = T::ONE / det;
+            let t = t_scaled * inv_det;
+            let hit = det != T::ZERO
+                && t_signed > T::ZERO
+                && t_signed <= limit * det_abs * slack
+                && t > T::ZERO
+                && t <= limit
+                && t.is_finite();
+            hits |= u32::from(hit) << l;
+            (out[0][l], out[1][l], out[2][l]) = (t, v * inv_det, w * inv_det);
+        }
+        hits
     }
 }
 

@@ -15,6 +15,8 @@
 //! - [`contract`]: `t_max` inclusive, `t > 0`, nothing behind the origin or in the triangle's
 //!   plane, both faces, degenerate triangles never hit, NaN and infinity a miss, `occludes`
 //!   agrees with `intersect` (on every call: [`contract::run`]).
+//! - [`group`]: `intersect_group` gives each ray of a group the hits of `intersect`, bit for
+//!   bit.
 //! - [`reference`](mod@reference): the independent `f64` solver (Cramer's rule) and the fixed-seed
 //!   generators of triangles and rays, for the back ends' own accuracy tests too.
 //! - [`sweeps`]: agreement with the reference on random rays, then after scaling the scene
@@ -33,6 +35,7 @@
 
 pub mod contract;
 pub mod cracks;
+pub mod group;
 pub mod reference;
 pub mod sweeps;
 pub mod ties;
@@ -75,6 +78,7 @@ pub fn check_all<I: Intersector + Default>() {
     contract::both_windings_hit::<I>();
     contract::axis_aligned_rays::<I>();
     contract::planes_on_both_sides_of_the_origin::<I>();
+    group::group_agrees_with_single_rays::<I>();
     sweeps::agrees_with_reference::<I>(g);
     sweeps::scale_sweep::<I>();
     sweeps::translation_sweep::<I>();
