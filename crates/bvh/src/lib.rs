@@ -101,7 +101,8 @@
 //!   kernel's rounding at triangle edges, then rounded outwards to `f32`.
 //! - The far distance of the slab test is multiplied by `1 + 2 gamma(3)` (Ize, "Robust BVH Ray
 //!   Traversal", JCGT 2013), which bounds the rounding of `(plane - origin) * inv_dir` in the
-//!   ray's precision; the current best distance is compared with the same factor, and a child
+//!   ray's precision (single rays fold the factor into the inverse used for far planes, once
+//!   per ray: the same four roundings in another order); the current best distance is compared with the same factor, and a child
 //!   whose entry distance equals the best distance is still visited, so ties are resolved by
 //!   [`intersect::Hit::nearer_than`] and not by traversal order. (The distance is computed as
 //!   a subtraction then a multiplication, never as one fused multiply-add with a precomputed

@@ -47,8 +47,12 @@ pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
     /// A sort key, increasing with the value for values `>= 0`, with 3 low bits free.
     fn key(self) -> u64;
     /// The lanes of `node` whose box `ray` meets within `(0, limit]` (bit `i` for lane `i`),
-    /// conservatively, and their entry distances in `t`.
-    fn hits(node: &Node, ray: &Prepared<Self>, limit: Self, t: &mut [Self; WIDTH]) -> u32;
+    /// conservatively, and their entry distances in `t`. `bound` is the limit times
+    /// [`Lane::SLACK`], the widening Ize's bound asks of the far distance: the exit distances
+    /// are widened in the ray's set-up (`inv_far`), so none of it is left on the node's
+    /// dependency chain. `(plane - origin) * (inv_dir * SLACK)` and `((plane - origin) *
+    /// inv_dir) * SLACK` round four times each, so the bound holds as it did.
+    fn hits(node: &Node, ray: &Prepared<Self>, bound: Self, t: &mut [Self; WIDTH]) -> u32;
     /// [`Lane::hits`] with AVX-512, the same bits.
     ///
     /// # Safety
@@ -58,7 +62,7 @@ pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
     unsafe fn hits_avx512(
         node: &Node,
         ray: &Prepared<Self>,
-        limit: Self,
+        bound: Self,
         t: &mut [Self; WIDTH],
     ) -> u32;
 }
@@ -66,7 +70,7 @@ pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
 /// A node test: the instruction set the traversal loop is compiled for.
 pub trait NodeTest: Copy {
     /// [`Lane::hits`] in this instruction set.
-    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32;
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, bound: S, t: &mut [S; WIDTH]) -> u32;
 }
 
 /// The build's own node test ([`Lane::hits`]).
@@ -75,8 +79,8 @@ pub struct Baseline;
 
 impl NodeTest for Baseline {
     #[inline(always)]
-    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32 {
-        S::hits(node, ray, limit, t)
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, bound: S, t: &mut [S; WIDTH]) -> u32 {
+        S::hits(node, ray, bound, t)
     }
 }
 
@@ -101,9 +105,9 @@ impl Avx512 {
 #[cfg(target_arch = "x86_64")]
 impl NodeTest for Avx512 {
     #[inline(always)]
-    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, limit: S, t: &mut [S; WIDTH]) -> u32 {
+    fn hits<S: Lane>(self, node: &Node, ray: &Prepared<S>, bound: S, t: &mut [S; WIDTH]) -> u32 {
         // SAFETY: an `Avx512` is made only by `Avx512::assume`, on a CPU with AVX-512F and VL.
-        unsafe { S::hits_avx512(node, ray, limit, t) }
+        unsafe { S::hits_avx512(node, ray, bound, t) }
     }
 }
 
@@ -112,6 +116,9 @@ impl NodeTest for Avx512 {
 pub struct Prepared<S> {
     origin: [S; 3],
     inv_dir: [S; 3],
+    /// `inv_dir` times [`Lane::SLACK`]: the far distances come out already widened (see
+    /// [`Lane::hits`]).
+    inv_far: [S; 3],
     /// The plane row (see [`Node::planes`]) the ray enters through along each axis.
     near: [usize; 3],
     /// The plane row it leaves through.
@@ -133,6 +140,7 @@ impl<S: Lane> Prepared<S> {
         Some(Self {
             origin: ray.origin.map(|x| S::from_f64(x.to_f64())),
             inv_dir: inv.map(|x| S::from_f64(x.to_f64())),
+            inv_far: inv.map(|x| S::from_f64(x.to_f64()) * S::SLACK),
             near: core::array::from_fn(|k| if negative[k] { k + 3 } else { k }),
             far: core::array::from_fn(|k| if negative[k] { k } else { k + 3 }),
         })
@@ -144,24 +152,24 @@ impl<S: Lane> Prepared<S> {
         allow(dead_code, reason = "with AVX2 only the tests use it, as the reference")
     )]
     #[inline(always)]
-    fn hits_scalar(&self, node: &Node, limit: S, t: &mut [S; WIDTH]) -> u32
+    fn hits_scalar(&self, node: &Node, bound: S, t: &mut [S; WIDTH]) -> u32
     where
         S: From<f32>,
     {
         let mut mask = 0;
         for (lane, t) in t.iter_mut().enumerate() {
             let mut near = S::ZERO;
-            let mut far = limit;
+            let mut far = bound;
             for k in 0..3 {
                 let lo = S::from(node.planes[self.near[k]][lane]);
                 let hi = S::from(node.planes[self.far[k]][lane]);
                 // `max_or`/`min_or` ignore a NaN distance (0 * inf: the ray lies in the face
                 // plane), so such a slab constrains nothing.
                 near = max_or(near, (lo - self.origin[k]) * self.inv_dir[k]);
-                far = min_or(far, (hi - self.origin[k]) * self.inv_dir[k]);
+                far = min_or(far, (hi - self.origin[k]) * self.inv_far[k]);
             }
             *t = near;
-            mask |= u32::from(near <= far * S::SLACK) << lane;
+            mask |= u32::from(near <= far) << lane;
         }
         mask
     }
@@ -179,14 +187,14 @@ impl Lane for f32 {
         u64::from(self.to_bits()) << 3
     }
     #[inline(always)]
-    fn hits(node: &Node, ray: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+    fn hits(node: &Node, ray: &Prepared<f32>, bound: f32, t: &mut [f32; WIDTH]) -> u32 {
         #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
         {
-            avx2::hits_f32(node, ray, limit, t)
+            avx2::hits_f32(node, ray, bound, t)
         }
         #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
         {
-            ray.hits_scalar(node, limit, t)
+            ray.hits_scalar(node, bound, t)
         }
     }
     #[cfg(target_arch = "x86_64")]
@@ -194,11 +202,11 @@ impl Lane for f32 {
     unsafe fn hits_avx512(
         node: &Node,
         ray: &Prepared<f32>,
-        limit: f32,
+        bound: f32,
         t: &mut [f32; WIDTH],
     ) -> u32 {
         // SAFETY: the caller guarantees AVX-512F and VL.
-        unsafe { avx512::hits_f32(node, ray, limit, t) }
+        unsafe { avx512::hits_f32(node, ray, bound, t) }
     }
 }
 
@@ -214,14 +222,14 @@ impl Lane for f64 {
         self.to_bits() & !7
     }
     #[inline(always)]
-    fn hits(node: &Node, ray: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+    fn hits(node: &Node, ray: &Prepared<f64>, bound: f64, t: &mut [f64; WIDTH]) -> u32 {
         #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
         {
-            avx2::hits_f64(node, ray, limit, t)
+            avx2::hits_f64(node, ray, bound, t)
         }
         #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
         {
-            ray.hits_scalar(node, limit, t)
+            ray.hits_scalar(node, bound, t)
         }
     }
     #[cfg(target_arch = "x86_64")]
@@ -229,11 +237,11 @@ impl Lane for f64 {
     unsafe fn hits_avx512(
         node: &Node,
         ray: &Prepared<f64>,
-        limit: f64,
+        bound: f64,
         t: &mut [f64; WIDTH],
     ) -> u32 {
         // SAFETY: the caller guarantees AVX-512F and VL.
-        unsafe { avx512::hits_f64(node, ray, limit, t) }
+        unsafe { avx512::hits_f64(node, ray, bound, t) }
     }
 }
 
@@ -245,7 +253,7 @@ mod avx2 {
 
     use core::arch::x86_64::*;
 
-    use super::{Lane, Node, Prepared, WIDTH};
+    use super::{Node, Prepared, WIDTH};
 
     #[inline(always)]
     fn plane(node: &Node, row: usize) -> __m256 {
@@ -255,21 +263,21 @@ mod avx2 {
     }
 
     #[inline(always)]
-    pub fn hits_f32(node: &Node, r: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+    pub fn hits_f32(node: &Node, r: &Prepared<f32>, bound: f32, t: &mut [f32; WIDTH]) -> u32 {
         // SAFETY: this module is compiled only when the build enables AVX2; `t` holds the 8
         // f32 of the unaligned store.
         unsafe {
             let mut near = _mm256_setzero_ps();
-            let mut far = _mm256_set1_ps(limit);
+            let mut far = _mm256_set1_ps(bound);
             for k in 0..3 {
                 let o = _mm256_set1_ps(r.origin[k]);
                 let inv = _mm256_set1_ps(r.inv_dir[k]);
+                let inv_far = _mm256_set1_ps(r.inv_far[k]);
                 let tn = _mm256_mul_ps(_mm256_sub_ps(plane(node, r.near[k]), o), inv);
-                let tf = _mm256_mul_ps(_mm256_sub_ps(plane(node, r.far[k]), o), inv);
+                let tf = _mm256_mul_ps(_mm256_sub_ps(plane(node, r.far[k]), o), inv_far);
                 near = _mm256_max_ps(tn, near);
                 far = _mm256_min_ps(tf, far);
             }
-            let far = _mm256_mul_ps(far, _mm256_set1_ps(f32::SLACK));
             let inside = _mm256_cmp_ps::<_CMP_LE_OQ>(near, far);
             _mm256_storeu_ps(t.as_mut_ptr(), near);
             _mm256_movemask_ps(inside) as u32
@@ -285,23 +293,23 @@ mod avx2 {
     }
 
     #[inline(always)]
-    pub fn hits_f64(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+    pub fn hits_f64(node: &Node, r: &Prepared<f64>, bound: f64, t: &mut [f64; WIDTH]) -> u32 {
         let mut mask = 0;
         for (h, high) in [false, true].into_iter().enumerate() {
             // SAFETY: AVX2 is enabled (see above); `t` holds 8 f64, lanes 4h..4h+4 are in
             // bounds of the unaligned store.
             unsafe {
                 let mut near = _mm256_setzero_pd();
-                let mut far = _mm256_set1_pd(limit);
+                let mut far = _mm256_set1_pd(bound);
                 for k in 0..3 {
                     let o = _mm256_set1_pd(r.origin[k]);
                     let inv = _mm256_set1_pd(r.inv_dir[k]);
+                    let inv_far = _mm256_set1_pd(r.inv_far[k]);
                     let tn = _mm256_mul_pd(_mm256_sub_pd(half(node, r.near[k], high), o), inv);
-                    let tf = _mm256_mul_pd(_mm256_sub_pd(half(node, r.far[k], high), o), inv);
+                    let tf = _mm256_mul_pd(_mm256_sub_pd(half(node, r.far[k], high), o), inv_far);
                     near = _mm256_max_pd(tn, near);
                     far = _mm256_min_pd(tf, far);
                 }
-                let far = _mm256_mul_pd(far, _mm256_set1_pd(f64::SLACK));
                 let inside = _mm256_cmp_pd::<_CMP_LE_OQ>(near, far);
                 _mm256_storeu_pd(t.as_mut_ptr().add(4 * h), near);
                 mask |= (_mm256_movemask_pd(inside) as u32) << (4 * h);
@@ -319,24 +327,24 @@ mod avx512 {
 
     use core::arch::x86_64::*;
 
-    use super::{Lane, Node, Prepared, WIDTH};
+    use super::{Node, Prepared, WIDTH};
 
     #[inline]
     #[target_feature(enable = "avx512f,avx512vl")]
-    pub fn hits_f32(node: &Node, r: &Prepared<f32>, limit: f32, t: &mut [f32; WIDTH]) -> u32 {
+    pub fn hits_f32(node: &Node, r: &Prepared<f32>, bound: f32, t: &mut [f32; WIDTH]) -> u32 {
         // SAFETY: a row is 8 f32, 32-byte aligned (`Node` is, and rows are 32 bytes).
         let plane = |row: usize| unsafe { _mm256_load_ps(node.planes[row].as_ptr()) };
         let mut near = _mm256_setzero_ps();
-        let mut far = _mm256_set1_ps(limit);
+        let mut far = _mm256_set1_ps(bound);
         for k in 0..3 {
             let o = _mm256_set1_ps(r.origin[k]);
             let inv = _mm256_set1_ps(r.inv_dir[k]);
+            let inv_far = _mm256_set1_ps(r.inv_far[k]);
             let tn = _mm256_mul_ps(_mm256_sub_ps(plane(r.near[k]), o), inv);
-            let tf = _mm256_mul_ps(_mm256_sub_ps(plane(r.far[k]), o), inv);
+            let tf = _mm256_mul_ps(_mm256_sub_ps(plane(r.far[k]), o), inv_far);
             near = _mm256_max_ps(tn, near);
             far = _mm256_min_ps(tf, far);
         }
-        let far = _mm256_mul_ps(far, _mm256_set1_ps(f32::SLACK));
         let inside = _mm256_cmp_ps_mask::<_CMP_LE_OQ>(near, far);
         // SAFETY: `t` holds the 8 f32 of the unaligned store.
         unsafe { _mm256_storeu_ps(t.as_mut_ptr(), near) };
@@ -347,7 +355,7 @@ mod avx512 {
     /// (the kept form: see [`hits_f64_zmm`]).
     #[inline]
     #[target_feature(enable = "avx512f,avx512vl")]
-    pub fn hits_f64(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+    pub fn hits_f64(node: &Node, r: &Prepared<f64>, bound: f64, t: &mut [f64; WIDTH]) -> u32 {
         let mut mask = 0;
         for h in 0..2 {
             let half = |row: usize| {
@@ -356,16 +364,16 @@ mod avx512 {
                 _mm256_cvtps_pd(lanes)
             };
             let mut near = _mm256_setzero_pd();
-            let mut far = _mm256_set1_pd(limit);
+            let mut far = _mm256_set1_pd(bound);
             for k in 0..3 {
                 let o = _mm256_set1_pd(r.origin[k]);
                 let inv = _mm256_set1_pd(r.inv_dir[k]);
+                let inv_far = _mm256_set1_pd(r.inv_far[k]);
                 let tn = _mm256_mul_pd(_mm256_sub_pd(half(r.near[k]), o), inv);
-                let tf = _mm256_mul_pd(_mm256_sub_pd(half(r.far[k]), o), inv);
+                let tf = _mm256_mul_pd(_mm256_sub_pd(half(r.far[k]), o), inv_far);
                 near = _mm256_max_pd(tn, near);
                 far = _mm256_min_pd(tf, far);
             }
-            let far = _mm256_mul_pd(far, _mm256_set1_pd(f64::SLACK));
             let inside = _mm256_cmp_pd_mask::<_CMP_LE_OQ>(near, far);
             // SAFETY: `t` holds 8 f64; lanes 4h..4h+4 are in bounds of the unaligned store.
             unsafe { _mm256_storeu_pd(t.as_mut_ptr().add(4 * h), near) };
@@ -379,22 +387,22 @@ mod avx512 {
     #[cfg_attr(not(test), expect(dead_code, reason = "measured slower; tested, not traced"))]
     #[inline]
     #[target_feature(enable = "avx512f,avx512vl")]
-    pub fn hits_f64_zmm(node: &Node, r: &Prepared<f64>, limit: f64, t: &mut [f64; WIDTH]) -> u32 {
+    pub fn hits_f64_zmm(node: &Node, r: &Prepared<f64>, bound: f64, t: &mut [f64; WIDTH]) -> u32 {
         let plane = |row: usize| {
             // SAFETY: a row is 8 f32, 32-byte aligned (`Node` is, and rows are 32 bytes).
             _mm512_cvtps_pd(unsafe { _mm256_load_ps(node.planes[row].as_ptr()) })
         };
         let mut near = _mm512_setzero_pd();
-        let mut far = _mm512_set1_pd(limit);
+        let mut far = _mm512_set1_pd(bound);
         for k in 0..3 {
             let o = _mm512_set1_pd(r.origin[k]);
             let inv = _mm512_set1_pd(r.inv_dir[k]);
+            let inv_far = _mm512_set1_pd(r.inv_far[k]);
             let tn = _mm512_mul_pd(_mm512_sub_pd(plane(r.near[k]), o), inv);
-            let tf = _mm512_mul_pd(_mm512_sub_pd(plane(r.far[k]), o), inv);
+            let tf = _mm512_mul_pd(_mm512_sub_pd(plane(r.far[k]), o), inv_far);
             near = _mm512_max_pd(tn, near);
             far = _mm512_min_pd(tf, far);
         }
-        let far = _mm512_mul_pd(far, _mm512_set1_pd(f64::SLACK));
         let inside = _mm512_cmp_pd_mask::<_CMP_LE_OQ>(near, far);
         // SAFETY: `t` holds the 8 f64 of the unaligned store.
         unsafe { _mm512_storeu_pd(t.as_mut_ptr(), near) };
@@ -516,7 +524,7 @@ where
             leaf.visit(leaf_slots(current), &mut limit);
         } else {
             let node = &nodes[current as usize];
-            let mask = test.hits(node, &prepared, lane(limit), &mut t);
+            let mask = test.hits(node, &prepared, lane::<S, T>(limit) * S::SLACK, &mut t);
             if mask != 0 {
                 let first = mask.trailing_zeros() as usize;
                 let rest = mask & (mask - 1);
@@ -589,7 +597,7 @@ where
         return false;
     }
     let Some(prepared) = Prepared::<S>::new(ray) else { return false };
-    let limit = lane(t_max);
+    let bound = lane::<S, T>(t_max) * S::SLACK;
     let mut stack: Stack<u32> = Stack::new();
     let mut t = [S::ZERO; WIDTH];
     let mut current = 0u32;
@@ -600,7 +608,7 @@ where
             }
         } else {
             let node = &nodes[current as usize];
-            let mut mask = test.hits(node, &prepared, limit, &mut t);
+            let mut mask = test.hits(node, &prepared, bound, &mut t);
             if mask != 0 {
                 current = node.refs[mask.trailing_zeros() as usize];
                 mask &= mask - 1;
