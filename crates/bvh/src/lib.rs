@@ -102,9 +102,10 @@
 //! - The far distance of the slab test is multiplied by `1 + 2 gamma(3)` (Ize, "Robust BVH Ray
 //!   Traversal", JCGT 2013), which bounds the rounding of `(plane - origin) * inv_dir` in the
 //!   ray's precision (single rays fold the factor into the inverse used for far planes, once
-//!   per ray: the same four roundings in another order); the current best distance is compared with the same factor, and a child
-//!   whose entry distance equals the best distance is still visited, so ties are resolved by
-//!   [`intersect::Hit::nearer_than`] and not by traversal order. (The distance is computed as
+//!   per ray: the same four roundings in another order); the current best distance is
+//!   compared with the same factor, and a child whose entry distance equals the best distance
+//!   is still visited, so ties are resolved by [`intersect::Hit::nearer_than`] and not by
+//!   traversal order. (The distance is computed as
 //!   a subtraction then a multiplication, never as one fused multiply-add with a precomputed
 //!   `origin * inv_dir`, whose error is not bounded relative to the result.)
 //! - Zero direction components give infinite inverse components; the `0 * inf = NaN` of a ray
