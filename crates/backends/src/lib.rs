@@ -55,6 +55,10 @@
 //! 2. **The same per-triangle data**: the same quantities precomputed at
 //!    [`Intersector::prepare`], in the same precision, the bytes per triangle reported in the
 //!    kernel's documentation (a cell may not precompute what its neighbours compute per ray).
+//!    Leaf blocks ([`Intersector::Block`]) lay out the same data for testing several triangles
+//!    at once; today only `la` has them (four triangles per test in glam's 4-vectors), so the
+//!    watertight row compares `la`'s blocks with the GA cells' one-by-one tests: a difference
+//!    of layout, not of algebra, until the GA cells test blocks in their own types too.
 //! 3. **The same decision order and tie rule**: the tests made in the same order (which
 //!    decides which branch ends most tests), the same closed or half-open edges, the same tie
 //!    rule and exact fallback for watertight methods, the same `t_max` slack.

@@ -12,6 +12,7 @@
 //!     type Real = f64;
 //!     type Prim = Triangle<f64>;
 //!     type RayData = ();
+//!     type Block = ();
 //!     const NAME: &'static str = "flat";
 //!     const ALGEBRA: Algebra = Algebra::La;
 //!     const METHOD: Method = Method::Report;
@@ -47,7 +48,7 @@
 use core::ops::Range;
 use std::time::{Duration, Instant};
 
-use intersect::{Hit, Intersector, Ray, Triangle};
+use intersect::{Hit, Intersector, Ray, Triangle, TriangleHit};
 use rayon::prelude::*;
 
 use crate::Bvh;
@@ -79,7 +80,8 @@ pub struct AccelStats {
     pub prepare: Duration,
     /// Bytes of BVH nodes and the slot-to-triangle map.
     pub bvh_bytes: usize,
-    /// Bytes of the back end's prepared triangles ([`Intersector::Prim`]).
+    /// Bytes of the back end's prepared triangles ([`Intersector::Prim`]) and their blocks
+    /// ([`Intersector::Block`]).
     pub prim_bytes: usize,
 }
 
@@ -113,6 +115,8 @@ pub struct Accel<I: Intersector> {
     bvh: Bvh<I::Real>,
     /// Prepared triangles; `prims[slot]` is triangle `bvh.order()[slot]`.
     prims: Vec<I::Prim>,
+    /// The kernel's blocks of `prims` ([`Intersector::prepare_blocks`]); none if it has none.
+    blocks: Vec<I::Block>,
     stats: AccelStats,
 }
 
@@ -129,17 +133,22 @@ impl<I: Intersector> Accel<I> {
     #[must_use]
     pub fn build(intersector: I, triangles: &[Triangle<I::Real>]) -> Self {
         let start = Instant::now();
-        let bvh = Bvh::from_triangles(triangles);
+        let bvh = Bvh::from_triangles(triangles).with_leaves_aligned(I::BLOCK);
         let bvh_build = start.elapsed();
 
         let start = Instant::now();
-        let prepare_one = |&i: &u32| intersector.prepare(&triangles[i as usize]);
+        // Padding slots (between leaves, for the kernel's blocks) hold a degenerate triangle,
+        // which no query reaches.
+        let padding = Triangle::default();
+        let prepare_one =
+            |&i: &u32| intersector.prepare(triangles.get(i as usize).unwrap_or(&padding));
         let prims: Vec<I::Prim> =
             if triangles.len() >= PARALLEL_PREPARE && rayon::current_num_threads() > 1 {
                 bvh.order().par_iter().map(prepare_one).collect()
             } else {
                 bvh.order().iter().map(prepare_one).collect()
             };
+        let blocks = intersector.prepare_blocks(&prims);
         let prepare = start.elapsed();
 
         let stats = AccelStats {
@@ -150,9 +159,16 @@ impl<I: Intersector> Accel<I> {
             bvh_build,
             prepare,
             bvh_bytes: bvh.bytes(),
-            prim_bytes: prims.len() * size_of::<I::Prim>(),
+            prim_bytes: prims.len() * size_of::<I::Prim>() + blocks.len() * size_of::<I::Block>(),
         };
-        Self { intersector, bvh, prims, stats }
+        Self { intersector, bvh, prims, blocks, stats }
+    }
+
+    /// The prepared triangles of the leaf in `slots`, and its blocks (followed by others).
+    #[inline(always)]
+    fn leaf(&self, slots: Range<usize>) -> (&[I::Prim], &[I::Block]) {
+        let blocks = self.blocks.get(slots.start / I::BLOCK..).unwrap_or_default();
+        (&self.prims[slots], blocks)
     }
 
     /// The back end.
@@ -176,13 +192,13 @@ impl<I: Intersector> Accel<I> {
     /// Number of triangles.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.prims.len()
+        self.stats.triangles
     }
 
     /// Whether the scene has no triangle.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.prims.is_empty()
+        self.stats.triangles == 0
     }
 
     /// The nearest hit along `ray` (`t > 0`), if any. Of several hits at the same distance,
@@ -250,21 +266,20 @@ impl<I: Intersector> Accel<I> {
         accept: impl Fn(I::Real) -> bool,
         best: &mut Option<Hit<I::Real>>,
     ) {
-        let first = slots.start;
-        let order = self.bvh.order();
-        for (k, prim) in self.prims[slots].iter().enumerate() {
-            // The kernel reports `t <= limit`: equal distances come through so that
-            // `nearer_than` can pick the lower index whatever the visiting order.
-            if let Some(h) = self.intersector.intersect(prim, ray, ray_data, *limit)
-                && accept(h.t)
-            {
-                let hit = Hit::new(order[first + k], h);
+        let order = &self.bvh.order()[slots.start..];
+        // The kernel reports `t <= limit`: equal distances come through so that
+        // `nearer_than` can pick the lower index whatever the visiting order.
+        let mut keep = |k: usize, h: TriangleHit<I::Real>, limit: &mut I::Real| {
+            if accept(h.t) {
+                let hit = Hit::new(order[k], h);
                 if best.is_none_or(|b| hit.nearer_than(&b)) {
                     *best = Some(hit);
                     *limit = hit.t;
                 }
             }
-        }
+        };
+        let (prims, blocks) = self.leaf(slots);
+        self.intersector.intersect_leaf(prims, blocks, ray, ray_data, limit, &mut keep);
     }
 
     /// [`Accel::closest_hit_within`] for every ray of `rays` with the same `t_max`, into
@@ -354,7 +369,8 @@ impl<I: Intersector> Accel<I> {
             self.bvh.any_packet(rays, &limits[..rays.len()], out, |slots, i| {
                 let ray = &rays[i];
                 let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
-                self.prims[slots].iter().any(|p| self.intersector.occludes(p, ray, &data, t_max))
+                let (prims, blocks) = self.leaf(slots);
+                self.intersector.occludes_leaf(prims, blocks, ray, &data, t_max)
             });
         }
     }
@@ -468,12 +484,7 @@ impl<I: Intersector> AnyLeaf for Any<'_, I> {
     fn visit(&mut self, slots: Range<usize>) -> bool {
         let Any { accel, ray, data, t_max } = self;
         let data = data.get_or_insert_with(|| accel.intersector.prepare_ray(ray));
-        // A plain loop: `Iter::any` stays out of line in the traversal loop.
-        for p in &accel.prims[slots] {
-            if accel.intersector.occludes(p, ray, data, *t_max) {
-                return true;
-            }
-        }
-        false
+        let (prims, blocks) = accel.leaf(slots);
+        accel.intersector.occludes_leaf(prims, blocks, ray, data, *t_max)
     }
 }

@@ -39,7 +39,10 @@
 //! lower x, y, z planes, then the upper ones: one AVX register each) and a 32-bit reference
 //! per child: another node, or a leaf (first slot and size, at most [`MAX_LEAF`] primitives).
 //! Leaves are not nodes: their boxes sit in their parent with their siblings'. A node is 224
-//! bytes. Nodes are stored depth-first from the root, node 0.
+//! bytes. Nodes are stored depth-first from the root, node 0. For a back end that tests a
+//! leaf's triangles in blocks ([`intersect::Intersector::BLOCK`]), every leaf starts at a
+//! multiple of the block ([`Bvh::with_leaves_aligned`], the slots between leaves padding), so
+//! that the leaf's blocks are found from its first slot without a table.
 //!
 //! # Build
 //!
@@ -142,7 +145,7 @@ pub use packet::{MIN_PACKET, PACKET};
 pub use simd::{ISA_ENV, Isa};
 
 use build::{Info, PARALLEL_MIN, PrimRef};
-use node::{Node, is_leaf, leaf_slots};
+use node::{Node, is_leaf, leaf_ref, leaf_slots};
 use traverse::{AnyLeaf, Baseline, ClosestLeaf};
 
 /// Largest number of bins per axis in the SAH build (sets of at least 4096 primitives; 16
@@ -155,6 +158,10 @@ pub const MAX_LEAF: usize = 8;
 pub const MAX_DEPTH: usize = 64;
 /// Outward padding of node boxes, in units in the last place of the box's largest coordinate.
 pub const PAD_ULPS: u32 = 32;
+
+/// The [`Bvh::order`] entry of a slot that holds no primitive (see
+/// [`Bvh::with_leaves_aligned`]).
+pub const PADDING: u32 = u32::MAX;
 
 /// A child of a node, as seen from outside.
 #[derive(Clone, Debug, PartialEq)]
@@ -189,8 +196,10 @@ impl<T: Copy> Child<T> {
 #[derive(Clone, Debug)]
 pub struct Bvh<T> {
     nodes: Vec<Node>,
-    /// `order[slot]` is the original index of the primitive stored at `slot`.
+    /// `order[slot]` is the original index of the primitive stored at `slot`, or [`PADDING`].
     order: Vec<u32>,
+    /// Number of primitives (`order` less its padding).
+    count: usize,
     depth: usize,
     leaves: usize,
     precision: PhantomData<T>,
@@ -227,6 +236,7 @@ impl<T: Real> Bvh<T> {
             return Self {
                 nodes: Vec::new(),
                 order: Vec::new(),
+                count: 0,
                 depth: 0,
                 leaves: 0,
                 precision: PhantomData,
@@ -241,7 +251,7 @@ impl<T: Real> Bvh<T> {
         let info = Info::of(&refs);
         let nodes = build::build::<T>(&mut refs, info);
         let order = refs.iter().map(PrimRef::index).collect();
-        let mut bvh = Self { nodes, order, depth: 0, leaves: 0, precision: PhantomData };
+        let mut bvh = Self { nodes, order, count: n, depth: 0, leaves: 0, precision: PhantomData };
         (bvh.depth, bvh.leaves) = bvh.measure();
         bvh
     }
@@ -265,7 +275,9 @@ impl<T: Real> Bvh<T> {
         (depth, leaves)
     }
 
-    /// Slot order: `order()[slot]` is the original index of the primitive stored at `slot`.
+    /// Slot order: `order()[slot]` is the original index of the primitive stored at `slot`,
+    /// or [`PADDING`] for a slot between leaves (only in a tree from
+    /// [`Bvh::with_leaves_aligned`]).
     #[must_use]
     pub fn order(&self) -> &[u32] {
         &self.order
@@ -274,13 +286,47 @@ impl<T: Real> Bvh<T> {
     /// Number of primitives.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.order.len()
+        self.count
     }
 
     /// Whether the tree holds no primitive.
     #[must_use]
     pub fn is_empty(&self) -> bool {
-        self.order.is_empty()
+        self.count == 0
+    }
+
+    /// The same tree with every leaf moved to start at a multiple of `align` slots, the slots
+    /// left between leaves marked [`PADDING`] in [`Bvh::order`]; `align` 1 leaves it as it is.
+    /// For a back end that lays out a leaf's primitives in blocks of `align`
+    /// ([`intersect::Intersector::BLOCK`]): a leaf's primitives are then the first lanes of
+    /// whole blocks, found from the leaf's first slot alone.
+    ///
+    /// # Panics
+    ///
+    /// If `align` is 0, or if the padded slots exceed [`MAX_SLOTS`].
+    #[must_use]
+    pub fn with_leaves_aligned(mut self, align: usize) -> Self {
+        assert!(align > 0, "leaves align to a positive number of slots");
+        if align == 1 {
+            return self;
+        }
+        // Every leaf reference, by its first slot (leaves partition the slots in order).
+        let mut leaves: Vec<(usize, usize)> = (0..self.nodes.len())
+            .flat_map(|i| (0..WIDTH).map(move |lane| (i, lane)))
+            .filter(|&(i, lane)| self.nodes[i].is_used(lane) && is_leaf(self.nodes[i].refs[lane]))
+            .collect();
+        leaves.sort_unstable_by_key(|&(i, lane)| leaf_slots(self.nodes[i].refs[lane]).start);
+        let mut order = Vec::with_capacity(self.order.len() + leaves.len() * (align - 1));
+        for (i, lane) in leaves {
+            let slots = leaf_slots(self.nodes[i].refs[lane]);
+            order.resize(order.len().next_multiple_of(align), PADDING);
+            assert!(order.len() + slots.len() <= MAX_SLOTS, "too many slots to align leaves");
+            self.nodes[i].refs[lane] = leaf_ref(order.len(), slots.len());
+            order.extend_from_slice(&self.order[slots]);
+        }
+        order.resize(order.len().next_multiple_of(align), PADDING);
+        self.order = order;
+        self
     }
 
     /// Number of nodes (leaves are not nodes: they live in their parents' lanes).

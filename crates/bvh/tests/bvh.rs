@@ -61,6 +61,7 @@ impl<T: Real> Intersector for Mt<T> {
     type Real = T;
     type Prim = Triangle<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "test-mt";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::MollerTrumbore;
@@ -718,5 +719,54 @@ fn packets_match_single_rays_on_real_meshes() {
             hits += check_packets(&Accel::build(mt::<f32>(), &mesh.triangles()), &rays32);
         }
         assert!(hits > 500, "{name}: {hits}");
+    }
+}
+
+/// A tree with its leaves aligned to blocks is the same tree: the same nodes, boxes and
+/// children, each leaf holding the same triangles from a slot that is a multiple of the
+/// block, padding only between leaves; and closest-hit traversals find the same triangles.
+#[test]
+fn aligned_leaves_keep_the_tree() {
+    let mut rng = Pcg64::seed_from_u64(0xa119);
+    let mesh = shared_mesh("teapot.obj");
+    for (name, tris64) in [("soup", soup(&mut rng, 2000)), ("teapot", mesh.triangles())] {
+        let tris: Vec<Triangle<f32>> = tris64.iter().map(Triangle::cast).collect();
+        let plain = bvh::Bvh::from_triangles(&tris);
+        for align in [1, 3, 4, 8] {
+            let aligned = plain.clone().with_leaves_aligned(align);
+            assert_eq!(aligned.len(), tris.len(), "{name}");
+            assert_eq!(aligned.node_count(), plain.node_count(), "{name}");
+            assert_eq!(aligned.order().len() % align, 0, "{name}");
+            let mut in_leaves = 0;
+            for i in 0..plain.node_count() {
+                for (a, b) in plain.children(i).into_iter().zip(aligned.children(i)) {
+                    assert_eq!(a.bounds(), b.bounds(), "{name}: node {i}");
+                    match (a, b) {
+                        (Child::Leaf { slots: s, .. }, Child::Leaf { slots: t, .. }) => {
+                            assert_eq!(t.start % align, 0, "{name}: leaf at {t:?}");
+                            assert_eq!(plain.order()[s], aligned.order()[t.clone()], "{name}");
+                            in_leaves += t.len();
+                        }
+                        (Child::Node { index: i, .. }, Child::Node { index: j, .. }) => {
+                            assert_eq!(i, j, "{name}");
+                        }
+                        _ => panic!("{name}: node {i}: a leaf became a node or back"),
+                    }
+                }
+            }
+            let padding = aligned.order().iter().filter(|&&p| p == bvh::PADDING).count();
+            assert_eq!(in_leaves + padding, aligned.order().len(), "{name}: padding only");
+            let mut hits = 0;
+            for ray in rays(&mut rng, 300, &tris64) {
+                let ray: Ray<f32> = ray.cast();
+                let hit = |bvh: &bvh::Bvh<f32>| {
+                    let found = closest_visit(bvh, bvh::Isa::current(), &tris, &ray).1;
+                    found.map(|(t, slot)| (t, bvh.order()[slot]))
+                };
+                assert_eq!(hit(&plain), hit(&aligned), "{name}: align {align}: {ray:?}");
+                hits += usize::from(hit(&plain).is_some());
+            }
+            assert!(hits > 30, "{name}: {hits} of 300 rays hit");
+        }
     }
 }

@@ -182,6 +182,7 @@ impl Intersector for Exact {
     type Real = f64;
     type Prim = ExactTriangle;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "exact";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Watertight;

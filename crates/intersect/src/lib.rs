@@ -18,6 +18,7 @@
 //!     type Real = f64;
 //!     type Prim = Triangle<f64>;
 //!     type RayData = ();
+//!     type Block = ();
 //!     const NAME: &'static str = "toy";
 //!     // The plane, then the point tested against the edges; no promise beyond the contract.
 //!     const ALGEBRA: Algebra = Algebra::La;
@@ -60,6 +61,13 @@
 //!   kernel wants plain vertices. The renderer builds one `Prim` per triangle at scene build
 //!   ([`Intersector::prepare`]) and stores them in BVH order, so the kernel reads only what it
 //!   needs and the cost of that precomputation is paid once, not per ray.
+//! - **A leaf's triangles together, if the kernel likes** ([`Intersector::Block`]). Testing a
+//!   leaf's triangles one by one costs a branch per triangle; a kernel may instead keep blocks
+//!   of [`Intersector::BLOCK`] triangles laid out lane by lane ([`Intersector::prepare_blocks`])
+//!   and test a block at once ([`Intersector::intersect_leaf`], [`Intersector::occludes_leaf`]).
+//!   The BVH then starts every leaf at a multiple of `BLOCK`, so a leaf's blocks follow from its
+//!   first slot. The hits stay those of the one-by-one loop, bit for bit; kernels without
+//!   blocks declare `type Block = ()` and keep the defaults.
 //! - **Per-ray data is the back end's own too** ([`Intersector::RayData`]): the watertight
 //!   kernel's axis permutation and shear, or an inverse direction. It is computed once per ray
 //!   and passed to every triangle test of that ray. Back ends that need none use `()`.
@@ -307,6 +315,11 @@ pub trait Intersector: Sync + Send {
     type Prim: Send + Sync;
     /// Per-ray data, computed once per ray by [`Intersector::prepare_ray`]; `()` if none.
     type RayData: Copy + Send + Sync;
+    /// Data of several consecutive triangles laid out to be tested together (say, their
+    /// vertices axis by axis, one lane per triangle), computed once by
+    /// [`Intersector::prepare_blocks`]; `()` for a kernel that tests a leaf's triangles one by
+    /// one.
+    type Block: Send + Sync;
     /// A short name for tables and command lines (`"la"`, `"ga"`, ...).
     const NAME: &'static str;
     /// The algebra the kernel is written in.
@@ -315,6 +328,9 @@ pub trait Intersector: Sync + Send {
     const METHOD: Method;
     /// What the kernel promises beyond the trait's contract.
     const GUARANTEES: Guarantees;
+    /// Triangles per [`Intersector::Block`]: a BVH starts every leaf at a multiple of it. 1
+    /// (the default) for a kernel without blocks.
+    const BLOCK: usize = 1;
     /// `None` for a cell of the method x algebra matrix: the method written in the algebra's
     /// own types, with no hand intrinsics and no per-test code on raw arrays. `Some(what)` for
     /// a labelled variant beside its cell (the same method and algebra), `what` saying how it
@@ -335,6 +351,67 @@ pub trait Intersector: Sync + Send {
         ray_data: &Self::RayData,
         t_max: Self::Real,
     ) -> Option<TriangleHit<Self::Real>>;
+
+    /// The blocks of a scene's prepared triangles `prims`, [`Intersector::BLOCK`] at a time:
+    /// block `b` holds `prims[BLOCK b..BLOCK (b + 1)]` (the last one padded as the kernel
+    /// likes), for [`Intersector::intersect_leaf`] and [`Intersector::occludes_leaf`]. A BVH
+    /// starts each leaf at a multiple of `BLOCK`, so a leaf's triangles are the first lanes of
+    /// its blocks. The default is none: the leaf queries' defaults test `prims` one by one.
+    fn prepare_blocks(&self, prims: &[Self::Prim]) -> Vec<Self::Block> {
+        let _ = prims;
+        Vec::new()
+    }
+
+    /// [`Intersector::intersect`] of `ray` with each triangle of a leaf in turn: `prims`, whose
+    /// blocks (from [`Intersector::prepare_blocks`]: the leaf starts at a multiple of
+    /// [`Intersector::BLOCK`]) begin `blocks`, which may go on with other leaves' blocks. For
+    /// every hit, `found(k, hit, limit)`, `k` the triangle's position in `prims`; `found` may
+    /// lower the limit before the next triangle. The calls are exactly those of that loop, in
+    /// its order, so every hit is the one `intersect` reports.
+    ///
+    /// The default is the loop. A kernel with blocks overrides it to test a block's triangles
+    /// together, with the same hits bit for bit, ties and limits included
+    /// (`conformance::leaf::leaf_agrees_with_one_by_one` tests this).
+    #[inline(always)]
+    fn intersect_leaf<F>(
+        &self,
+        prims: &[Self::Prim],
+        blocks: &[Self::Block],
+        ray: &Ray<Self::Real>,
+        ray_data: &Self::RayData,
+        limit: &mut Self::Real,
+        found: &mut F,
+    ) where
+        F: FnMut(usize, TriangleHit<Self::Real>, &mut Self::Real),
+    {
+        let _ = blocks;
+        for (k, prim) in prims.iter().enumerate() {
+            if let Some(hit) = self.intersect(prim, ray, ray_data, *limit) {
+                found(k, hit, limit);
+            }
+        }
+    }
+
+    /// Whether `ray` hits any triangle of a leaf within `(0, t_max]`: what
+    /// [`Intersector::occludes`] says of one of them (see [`Intersector::intersect_leaf`]).
+    #[inline(always)]
+    fn occludes_leaf(
+        &self,
+        prims: &[Self::Prim],
+        blocks: &[Self::Block],
+        ray: &Ray<Self::Real>,
+        ray_data: &Self::RayData,
+        t_max: Self::Real,
+    ) -> bool {
+        let _ = blocks;
+        // A plain loop: `Iter::any` can stay out of line in a traversal loop.
+        for prim in prims {
+            if self.occludes(prim, ray, ray_data, t_max) {
+                return true;
+            }
+        }
+        false
+    }
 
     /// [`Intersector::intersect`] of each of `prims` in turn with each ray of a group: ray `r`
     /// is `rays[r]`, prepared as `data[r]`, searching within `limits[r]`. For every hit,

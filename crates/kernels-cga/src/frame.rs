@@ -95,6 +95,7 @@ impl<T: Scalar> Intersector for CgaFrame<T> {
     type Real = T;
     type Prim = CgaFramePrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "cga-frame";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::Frame;

@@ -84,6 +84,7 @@ impl<T: Scalar> Intersector for CgaMt<T> {
     type Real = T;
     type Prim = CgaMtPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "cga-mt";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::MollerTrumbore;

@@ -108,6 +108,7 @@ impl<T: Scalar> Intersector for CgaPlucker<T> {
     type Real = T;
     type Prim = CgaPluckerPrim<T>;
     type RayData = CgaPluckerRay<T>;
+    type Block = ();
     const NAME: &'static str = "cga-plucker";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::Plucker;

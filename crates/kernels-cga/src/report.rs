@@ -104,6 +104,7 @@ impl<T: Scalar> Intersector for CgaReport<T> {
     type Real = T;
     type Prim = CgaReportPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "cga-report";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::Report;

@@ -125,6 +125,7 @@ impl<T: Scalar> Intersector for CgaWatertight<T> {
     type Real = T;
     type Prim = CgaWatertightPrim<T>;
     type RayData = CgaWatertightRay<T>;
+    type Block = ();
     const NAME: &'static str = "cga-watertight";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::Watertight;

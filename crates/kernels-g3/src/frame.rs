@@ -226,6 +226,7 @@ impl<T: GaReal> Intersector for G3Frame<T> {
     type Real = T;
     type Prim = G3FramePrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "ga";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Frame;

@@ -85,6 +85,7 @@ impl<T: GaReal> Intersector for G3FrameCell<T> {
     type Real = T;
     type Prim = G3FrameCellPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "g3-frame";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Frame;

@@ -79,6 +79,7 @@ impl<T: GaReal> Intersector for G3Mt<T> {
     type Real = T;
     type Prim = G3MtPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "g3-mt";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::MollerTrumbore;

@@ -94,6 +94,7 @@ impl<T: GaReal> Intersector for G3Plucker<T> {
     type Real = T;
     type Prim = G3PluckerPrim<T>;
     type RayData = G3PluckerRay<T>;
+    type Block = ();
     const NAME: &'static str = "g3-plucker";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Plucker;

@@ -102,6 +102,7 @@ impl<T: GaReal> Intersector for G3Report<T> {
     type Real = T;
     type Prim = G3ReportPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "ga-report";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Report;

@@ -191,6 +191,7 @@ impl<T: GaReal> Intersector for G3Watertight<T> {
     type Real = T;
     type Prim = G3WatertightPrim<T>;
     type RayData = G3WatertightRay<T>;
+    type Block = ();
     const NAME: &'static str = "ga-plucker";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Watertight;

@@ -96,6 +96,7 @@ impl<T: GaReal> Intersector for G3WatertightCell<T> {
     type Real = T;
     type Prim = G3WatertightCellPrim<T>;
     type RayData = G3WatertightRay<T>;
+    type Block = ();
     const NAME: &'static str = "g3-watertight";
     const ALGEBRA: Algebra = Algebra::G3;
     const METHOD: Method = Method::Watertight;

@@ -116,6 +116,7 @@ impl<T: GlamReal> Intersector for Frame<T> {
     type Real = T;
     type Prim = FramePrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "la-frame";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Frame;

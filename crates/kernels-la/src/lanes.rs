@@ -7,9 +7,9 @@
 //! none of its methods become public API.
 
 use core::fmt::Debug;
-use core::ops::{Add, Mul, Sub};
+use core::ops::{Add, Div, Mul, Neg, Sub};
 
-use glam::{DVec3, Vec3A, Vec3Swizzles};
+use glam::{DVec3, DVec4, Vec3A, Vec3Swizzles, Vec4};
 use intersect::Real;
 
 /// The vector operations the kernels need, for one precision: an extension of the shared
@@ -56,10 +56,73 @@ pub trait Lanes: Real {
     /// of each lane is that of the exact value: the watertight kernel's fallback when the
     /// plain computation gives a zero. See [`crate::Watertight`].
     fn edge_functions_exact_sign(x: Self::V, y: Self::V) -> Self::V;
+
+    /// glam's 4-vector of this precision: four triangles of a leaf block, one per lane.
+    type Q: Copy
+        + Debug
+        + PartialEq
+        + Send
+        + Sync
+        + Add<Output = Self::Q>
+        + Sub<Output = Self::Q>
+        + Mul<Output = Self::Q>
+        + Div<Output = Self::Q>
+        + Neg<Output = Self::Q>;
+    /// The four lanes `a`.
+    fn q_load(a: &[Self; 4]) -> Self::Q;
+    /// `[x, x, x, x]`.
+    fn q_splat(x: Self) -> Self::Q;
+    /// The lanes as an array.
+    fn q_lanes(q: Self::Q) -> [Self; 4];
+    /// Bit `l`: `a[l] < b[l]`.
+    fn q_lt(a: Self::Q, b: Self::Q) -> u32;
+    /// Bit `l`: `a[l] <= b[l]`.
+    fn q_le(a: Self::Q, b: Self::Q) -> u32;
+    /// Bit `l`: `a[l] == b[l]`.
+    fn q_eq(a: Self::Q, b: Self::Q) -> u32;
+    /// Bit `l`: `a[l]` is finite.
+    fn q_finite(a: Self::Q) -> u32;
+    /// Lane `l`: `-a[l]` where bit `l` of `mask` is set, else `a[l]`.
+    fn q_negate_where(mask: u32, a: Self::Q) -> Self::Q;
 }
 
 impl Lanes for f32 {
     type V = Vec3A;
+    type Q = Vec4;
+
+    #[inline(always)]
+    fn q_load(a: &[f32; 4]) -> Vec4 {
+        Vec4::from_array(*a)
+    }
+    #[inline(always)]
+    fn q_splat(x: f32) -> Vec4 {
+        Vec4::splat(x)
+    }
+    #[inline(always)]
+    fn q_lanes(q: Vec4) -> [f32; 4] {
+        q.to_array()
+    }
+    #[inline(always)]
+    fn q_lt(a: Vec4, b: Vec4) -> u32 {
+        a.cmplt(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_le(a: Vec4, b: Vec4) -> u32 {
+        a.cmple(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_eq(a: Vec4, b: Vec4) -> u32 {
+        a.cmpeq(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_finite(a: Vec4) -> u32 {
+        a.is_finite_mask().bitmask()
+    }
+    #[inline(always)]
+    fn q_negate_where(mask: u32, a: Vec4) -> Vec4 {
+        let m = glam::BVec4A::new(mask & 1 != 0, mask & 2 != 0, mask & 4 != 0, mask & 8 != 0);
+        Vec4::select(m, -a, a)
+    }
 
     #[inline(always)]
     fn load(p: [f32; 3]) -> Vec3A {
@@ -114,6 +177,41 @@ impl Lanes for f32 {
 
 impl Lanes for f64 {
     type V = DVec3;
+    type Q = DVec4;
+
+    #[inline(always)]
+    fn q_load(a: &[f64; 4]) -> DVec4 {
+        DVec4::from_array(*a)
+    }
+    #[inline(always)]
+    fn q_splat(x: f64) -> DVec4 {
+        DVec4::splat(x)
+    }
+    #[inline(always)]
+    fn q_lanes(q: DVec4) -> [f64; 4] {
+        q.to_array()
+    }
+    #[inline(always)]
+    fn q_lt(a: DVec4, b: DVec4) -> u32 {
+        a.cmplt(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_le(a: DVec4, b: DVec4) -> u32 {
+        a.cmple(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_eq(a: DVec4, b: DVec4) -> u32 {
+        a.cmpeq(b).bitmask()
+    }
+    #[inline(always)]
+    fn q_finite(a: DVec4) -> u32 {
+        a.is_finite_mask().bitmask()
+    }
+    #[inline(always)]
+    fn q_negate_where(mask: u32, a: DVec4) -> DVec4 {
+        let m = glam::BVec4::new(mask & 1 != 0, mask & 2 != 0, mask & 4 != 0, mask & 8 != 0);
+        DVec4::select(m, -a, a)
+    }
 
     #[inline(always)]
     fn load(p: [f64; 3]) -> DVec3 {

@@ -48,9 +48,9 @@
 //! | Faces | both | both |
 //! | Degenerate triangles | never hit (zero area decided exactly at [`Intersector::prepare`](intersect::Intersector::prepare)) | never hit (same) |
 //! | NaN or infinite input | miss, no panic | miss, no panic |
-//! | Per triangle | 3 vertices, transposed: 48 B (`f32`), 72 B (`f64`) | `a`, `e1`, `e2`: 48 B (`f32`), 72 B (`f64`) |
-//! | Per ray | axis permutation, permuted origin, shear ([`WatertightRay`]) | nothing |
-//! | Per test, until the first branch | 3 vector subtractions, 2 vector multiply-subtracts (translate + shear), 2 shuffles, 2 multiplies, 1 subtraction (edge functions) | 1 cross, 1 dot, then a division on every non-parallel test |
+//! | Per triangle | 3 vertices, transposed: 48 B (`f32`), 72 B (`f64`); and again axis by axis in blocks of four for single rays ([`WatertightBlock`]): 36 B, 72 B, plus the padding of leaves to whole blocks | `a`, `e1`, `e2`: 48 B (`f32`), 72 B (`f64`) |
+//! | Per ray | axis permutation, permuted origin, shear, the last two also broadcast ([`WatertightRay`]) | nothing |
+//! | Per test, until the first branch | one triangle (packets, fallbacks): 3 vector subtractions, 2 vector multiply-subtracts (translate + shear), 2 shuffles, 2 multiplies, 1 subtraction (edge functions); single rays test four triangles of a leaf at once in glam's 4-vectors: 9 subtractions, 6 multiplies and 6 subtractions (translate + shear), 6 multiplies and 3 subtractions (edge functions), 6 compares | 1 cross, 1 dot, then a division on every non-parallel test |
 //! | Division | only when the edge and distance tests pass | one reciprocal per non-parallel test |
 //! | Rare slow path | exact-sign recomputation when an edge function is exactly 0 (`f64` arithmetic for `f32`, fused multiply-adds for `f64`) | none |
 //!
@@ -97,7 +97,7 @@ pub use frame::{Frame, FramePrim};
 pub use moller_trumbore::{MollerTrumbore, MtPrim};
 pub use plucker::{Plucker, PluckerPrim, PluckerRay};
 pub use report::{Report, ReportPrim};
-pub use watertight::{Watertight, WatertightPrim, WatertightRay};
+pub use watertight::{Watertight, WatertightBlock, WatertightPrim, WatertightRay};
 
 /// A precision the glam back end supports: `f32` (computed with [`glam::Vec3A`]) and `f64`
 /// (with [`glam::DVec3`]).

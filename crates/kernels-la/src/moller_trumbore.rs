@@ -95,6 +95,7 @@ impl<T: GlamReal> Intersector for MollerTrumbore<T> {
     type Real = T;
     type Prim = MtPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "la-mt";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::MollerTrumbore;

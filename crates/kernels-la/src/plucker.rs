@@ -114,6 +114,7 @@ impl<T: GlamReal> Intersector for Plucker<T> {
     type Real = T;
     type Prim = PluckerPrim<T>;
     type RayData = PluckerRay<T>;
+    type Block = ();
     const NAME: &'static str = "la-plucker";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Plucker;

@@ -84,6 +84,7 @@ impl<T: GlamReal> Intersector for Report<T> {
     type Real = T;
     type Prim = ReportPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "la-report";
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Report;

@@ -85,21 +85,43 @@
 //! - NaN anywhere fails every comparison that accepts, so it is a miss; no branch can panic
 //!   (the axis indices are always in `0..3`).
 //!
-//! # Several rays at once
+//! # Several pairs at once
 //!
-//! [`Intersector::intersect_group`] (the leaf stage of packet traversal) runs steps 2-8 for
-//! [`LANES`] rays at a time against one triangle, one ray per lane of plain arrays that the
-//! compiler vectorises (AVX2: eight `f32` lanes in one register). The rays of a block share
-//! their permutation `k` (a block is formed per permutation; coherent rays mostly share one),
-//! so the triangle's rows are picked once and broadcast. Each lane computes every value with
-//! the operations of the single-ray code in the same order: `z = v - o_z`,
-//! `x = (v - o_x) - z Sx`, the edge functions `next.x * this.y - next.y * this.x`,
-//! `det = (W + U) + V` and `T = (W C'z + U A'z) + V B'z` (glam's `element_sum` and `dot`
-//! order), the same slack and the same final division. So its hits are those of
-//! [`Intersector::intersect`], bit for bit. A lane with an exactly zero edge function (step 4,
-//! the exact fallback and the tie rule) is handed to `intersect` itself.
+//! Two leaf stages run steps 2-8 for several (ray, triangle) pairs at a time, one pair per
+//! lane:
+//!
+//! - [`Intersector::intersect_group`] (packet traversal, `packets`): [`LANES`] rays against
+//!   one triangle, in plain arrays the compiler vectorises (AVX2: eight `f32` lanes in one
+//!   register). The rays of a block share their permutation `k` (a block is formed per
+//!   permutation; coherent rays mostly share one), so the triangle's rows are picked once and
+//!   broadcast.
+//! - [`Intersector::intersect_leaf`] and [`Intersector::occludes_leaf`] (single rays,
+//!   `blocks`): one ray against the [`BLOCK`] triangles of a [`WatertightBlock`] in glam's
+//!   4-vectors, the block's vertices stored axis by axis so that the ray's permutation picks
+//!   whole rows. The BVH starts every leaf at a multiple of [`BLOCK`] (`Intersector::BLOCK`),
+//!   so a leaf's triangles are the first lanes of its blocks, found from its first slot. A
+//!   block's lanes are tested at once, then reported in order, each hit checked against the
+//!   limit as the hits before it in the leaf lowered it: the single-ray test accepts exactly
+//!   `t <= limit` for the same rounded `t` (the distance test of step 7 never rejects what
+//!   that accepts), so this is the loop's answer. The ray's origin and shear are kept
+//!   broadcast in [`WatertightRay`], once per ray rather than once per leaf.
+//!
+//! Each lane computes every value with the operations of the single-ray code in the same
+//! order: `z = v - o_z`, `x = (v - o_x) - z Sx`, the edge functions
+//! `next.x * this.y - next.y * this.x`, `det = (W + U) + V` and `T = (W C'z + U A'z) + V B'z`
+//! (glam's `element_sum` and `dot` order), the same slack and the same final division. So its
+//! hits are those of [`Intersector::intersect`], bit for bit (`conformance::group` and
+//! `conformance::leaf` check it). A lane with an exactly zero edge function (step 4, the
+//! exact fallback and the tie rule) is handed to `intersect` itself.
+
+mod blocks;
+mod packets;
 
 use core::marker::PhantomData;
+
+pub use blocks::{BLOCK, WatertightBlock};
+pub use packets::LANES;
+use packets::Rays;
 
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
 
@@ -146,20 +168,24 @@ pub struct WatertightPrim<T: GlamReal> {
 /// What [`Watertight`] computes once per ray (paper, Fig. 5): the axis permutation, the
 /// origin in permuted axes, and the shear that maps the direction to `(0, 0, 1)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct WatertightRay<T> {
+pub struct WatertightRay<T: GlamReal> {
     /// `[kx, ky, kz]`: `kz` is the dominant axis of the direction.
-    k: [u8; 3],
+    k: [u32; 3],
     /// `(o[kx], o[ky], o[kz])`.
     origin: [T; 3],
     /// `(Sx, Sy, Sz) = (d[kx], d[ky], 1) / d[kz]`.
     shear: [T; 3],
+    /// `origin` and `shear`, each in every lane of a 4-vector, for the leaf blocks.
+    splats: [T::Q; 6],
 }
 
 impl<T: GlamReal> Intersector for Watertight<T> {
     type Real = T;
     type Prim = WatertightPrim<T>;
     type RayData = WatertightRay<T>;
+    type Block = WatertightBlock<T>;
     const NAME: &'static str = "la";
+    const BLOCK: usize = BLOCK;
     const ALGEBRA: Algebra = Algebra::La;
     const METHOD: Method = Method::Watertight;
     const GUARANTEES: Guarantees = Guarantees { watertight: true, exact: false };
@@ -194,10 +220,15 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         }
         // Divisions, as in the paper, rather than multiplications by 1/d[kz]: one rounding
         // each. Once per ray, so the cost does not matter.
+        let origin = [ray.origin[kx], ray.origin[ky], ray.origin[kz]];
+        let shear = [d[kx] / d[kz], d[ky] / d[kz], T::ONE / d[kz]];
+        let [ox, oy, oz] = origin.map(T::q_splat);
+        let [sx, sy, sz] = shear.map(T::q_splat);
         WatertightRay {
-            k: [kx as u8, ky as u8, kz as u8],
-            origin: [ray.origin[kx], ray.origin[ky], ray.origin[kz]],
-            shear: [d[kx] / d[kz], d[ky] / d[kz], T::ONE / d[kz]],
+            k: [kx as u32, ky as u32, kz as u32],
+            origin,
+            shear,
+            splats: [ox, oy, oz, sx, sy, sz],
         }
     }
 
@@ -209,7 +240,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         rd: &WatertightRay<T>,
         t_max: T,
     ) -> Option<TriangleHit<T>> {
-        let [kx, ky, kz] = rd.k.map(usize::from);
+        let [kx, ky, kz] = rd.k.map(|a| a as usize);
         let [sx, sy, sz] = rd.shear;
 
         // Step 2: all three vertices relative to the origin, permuted and sheared.
@@ -270,7 +301,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
     }
 
     /// Blocks of up to [`LANES`] rays that share a permutation, each tested lane-wise against
-    /// every triangle in turn (see [Several rays at once](self#several-rays-at-once)).
+    /// every triangle in turn (see [Several pairs at once](self#several-pairs-at-once)).
     #[inline]
     fn intersect_group<F>(
         &self,
@@ -303,151 +334,84 @@ impl<T: GlamReal> Intersector for Watertight<T> {
                         left &= !(1 << r);
                     }
                 }
-                let block = Block::new(data, members, n);
-                self.block(&block, k, prims, rays, data, limits, found);
+                let block = Rays::new(data, members, n);
+                self.rays(&block, k, prims, rays, data, limits, found);
             }
         }
     }
-}
 
-impl<T: GlamReal> Watertight<T> {
-    /// One block of [`Intersector::intersect_group`]: every triangle in turn against the
-    /// block's lanes, reporting each lane's hit in order of its ray.
-    #[allow(clippy::too_many_arguments)] // the group's parts, as the trait hands them over
+    fn prepare_blocks(&self, prims: &[WatertightPrim<T>]) -> Vec<WatertightBlock<T>> {
+        Self::blocks_of(prims)
+    }
+
+    /// Each block's lanes tested at once, then reported in order, each hit checked against
+    /// the limit as the hits before it lowered it, and each exact-zero lane handed to
+    /// [`Intersector::intersect`] with the limit of its turn (see
+    /// [Several pairs at once](self#several-pairs-at-once)).
     #[inline(always)]
-    fn block<F>(
+    fn intersect_leaf<F>(
         &self,
-        block: &Block<T>,
-        k: [u8; 3],
         prims: &[WatertightPrim<T>],
-        rays: &[Ray<T>],
-        data: &[WatertightRay<T>],
-        limits: &mut [T],
+        blocks: &[WatertightBlock<T>],
+        ray: &Ray<T>,
+        rd: &WatertightRay<T>,
+        limit: &mut T,
         found: &mut F,
     ) where
-        F: FnMut(usize, usize, TriangleHit<T>, &mut T),
+        F: FnMut(usize, TriangleHit<T>, &mut T),
     {
-        let [kx, ky, kz] = k.map(usize::from);
-        let (members, n) = (&block.members, block.n);
-        let live = (1u32 << n) - 1;
-        let (mut e, mut z, mut out) =
-            ([[T::ZERO; LANES]; 3], [[T::ZERO; LANES]; 3], [[T::ZERO; LANES]; 3]);
-        for (p, prim) in prims.iter().enumerate() {
-            let rows = [kx, ky, kz].map(|a| T::lanes(prim.axes[a]));
-            let (candidates, zeros) = block.edges(rows, &mut e, &mut z);
-            let mut hits = 0;
-            if candidates & live != 0 {
-                let lane_limits: [T; LANES] =
-                    core::array::from_fn(|l| limits[members[l.min(n - 1)]]);
-                hits = block.distances(&e, &z, &lane_limits, &mut out) & candidates;
+        for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
+            let lanes = Self::lanes(b, prims.len());
+            let (candidates, zeros, e, z) = Self::block_edges(block, lanes, rd);
+            if candidates | zeros == 0 {
+                continue;
             }
-            let mut report = (hits | zeros) & live;
+            let (mut hits, mut out) = (0, [[T::ZERO; BLOCK]; 3]);
+            if candidates != 0 {
+                let (mask, values) = Self::block_distances(e, z, rd.splats[5], *limit);
+                (hits, out) = (mask & candidates, values);
+            }
+            let mut report = hits | zeros;
             while report != 0 {
                 let l = report.trailing_zeros() as usize;
                 report &= report - 1;
-                let r = members[l];
-                let hit = if zeros >> l & 1 == 1 {
-                    self.intersect(prim, &rays[r], &data[r], limits[r])
-                } else {
-                    Some(TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] })
-                };
-                if let Some(hit) = hit {
-                    found(r, p, hit, &mut limits[r]);
+                let k = b * BLOCK + l;
+                if zeros >> l & 1 == 1 {
+                    if let Some(hit) = self.intersect(&prims[k], ray, rd, *limit) {
+                        found(k, hit, limit);
+                    }
+                } else if out[0][l] <= *limit {
+                    found(k, TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] }, limit);
                 }
             }
         }
     }
-}
 
-/// Rays per block of [`Intersector::intersect_group`] for [`Watertight`].
-pub const LANES: usize = 16;
-
-/// The lanes of one block of [`Watertight::intersect_group`]: rays `members[..n]` of the
-/// group, which share the permutation `k`, as structure of arrays (lanes past `n` repeat the
-/// last ray and are never reported).
-struct Block<T> {
-    n: usize,
-    members: [usize; LANES],
-    origin: [[T; LANES]; 3],
-    shear: [[T; LANES]; 3],
-}
-
-impl<T: GlamReal> Block<T> {
-    fn new(data: &[WatertightRay<T>], members: [usize; LANES], n: usize) -> Self {
-        let at = |l: usize| &data[members[l.min(n - 1)]];
-        Block {
-            n,
-            members,
-            origin: core::array::from_fn(|a| core::array::from_fn(|l| at(l).origin[a])),
-            shear: core::array::from_fn(|a| core::array::from_fn(|l| at(l).shear[a])),
-        }
-    }
-
-    /// Steps 2, 3 and 5 for every lane against the triangle whose vertices, in the block's
-    /// permuted axes, are `rows = [xs, ys, zs]`: the edge functions `(W, U, V)` into `e`, the
-    /// sheared `z` of the three vertices into `z`, and two masks of lanes: those whose edge
-    /// functions are nonzero with one sign (candidates), and those with an exact zero.
     #[inline(always)]
-    fn edges(
+    fn occludes_leaf(
         &self,
-        rows: [[T; 3]; 3],
-        e: &mut [[T; LANES]; 3],
-        z: &mut [[T; LANES]; 3],
-    ) -> (u32, u32) {
-        let [xs, ys, zs] = rows;
-        let (mut candidates, mut zeros) = (0, 0);
-        for l in 0..LANES {
-            let [ox, oy, oz] = [self.origin[0][l], self.origin[1][l], self.origin[2][l]];
-            let [sx, sy] = [self.shear[0][l], self.shear[1][l]];
-            let zl = zs.map(|v| v - oz);
-            let x = [0, 1, 2].map(|i| (xs[i] - ox) - zl[i] * sx);
-            let y = [0, 1, 2].map(|i| (ys[i] - oy) - zl[i] * sy);
-            let w = x[1] * y[0] - y[1] * x[0];
-            let u = x[2] * y[1] - y[2] * x[1];
-            let v = x[0] * y[2] - y[0] * x[2];
-            // Signs as the single-ray test reads them; a NaN lane misses either way.
-            let negative = [w, u, v].map(|f| f < T::ZERO);
-            let same = negative[0] == negative[1] && negative[1] == negative[2];
-            let zero = w == T::ZERO || u == T::ZERO || v == T::ZERO;
-            candidates |= u32::from(same && !zero) << l;
-            zeros |= u32::from(zero) << l;
-            (e[0][l], e[1][l], e[2][l]) = (w, u, v);
-            (z[0][l], z[1][l], z[2][l]) = (zl[0], zl[1], zl[2]);
+        prims: &[WatertightPrim<T>],
+        blocks: &[WatertightBlock<T>],
+        ray: &Ray<T>,
+        rd: &WatertightRay<T>,
+        t_max: T,
+    ) -> bool {
+        for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
+            let lanes = Self::lanes(b, prims.len());
+            let (candidates, mut zeros, e, z) = Self::block_edges(block, lanes, rd);
+            let hits = |(mask, _): (u32, _)| mask & candidates != 0;
+            if candidates != 0 && hits(Self::block_distances(e, z, rd.splats[5], t_max)) {
+                return true;
+            }
+            while zeros != 0 {
+                let k = b * BLOCK + zeros.trailing_zeros() as usize;
+                zeros &= zeros - 1;
+                if self.occludes(&prims[k], ray, rd, t_max) {
+                    return true;
+                }
+            }
         }
-        (candidates, zeros)
-    }
-
-    /// Steps 6-8 for every lane, from [`Self::edges`]' values, within `limits`: the mask of
-    /// lanes that hit (meaningful on the candidates), their `t`, `u`, `v` in `out`.
-    #[inline(always)]
-    fn distances(
-        &self,
-        e: &[[T; LANES]; 3],
-        z: &[[T; LANES]; 3],
-        limits: &[T; LANES],
-        out: &mut [[T; LANES]; 3],
-    ) -> u32 {
-        let slack = T::ONE + T::EPSILON * T::from_f64(4.0);
-        let mut hits = 0;
-        for l in 0..LANES {
-            let (w, u, v, sz) = (e[0][l], e[1][l], e[2][l], self.shear[2][l]);
-            let det = (w + u) + v;
-            let t_scaled = (w * (z[2][l] * sz) + u * (z[0][l] * sz)) + v * (z[1][l] * sz);
-            let (t_signed, det_abs) =
-                if det < T::ZERO { (-t_scaled, -det) } else { (t_scaled, det) };
-            let limit = limits[l];
-            let inv_det = T::ONE / det;
-            let t = t_scaled * inv_det;
-            let hit = det != T::ZERO
-                && t_signed > T::ZERO
-                && t_signed <= limit * det_abs * slack
-                && t > T::ZERO
-                && t <= limit
-                && t.is_finite();
-            hits |= u32::from(hit) << l;
-            (out[0][l], out[1][l], out[2][l]) = (t, v * inv_det, w * inv_det);
-        }
-        hits
+        false
     }
 }
 

@@ -143,6 +143,7 @@ impl<T: Scalar> Intersector for PgaFrame<T> {
     type Real = T;
     type Prim = PgaFramePrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "pga-frame";
     const ALGEBRA: Algebra = Algebra::Pga;
     const METHOD: Method = Method::Frame;

@@ -85,6 +85,7 @@ impl<T: Scalar> Intersector for PgaMt<T> {
     type Real = T;
     type Prim = PgaMtPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "pga-mt";
     const ALGEBRA: Algebra = Algebra::Pga;
     const METHOD: Method = Method::MollerTrumbore;

@@ -108,6 +108,7 @@ impl<T: Scalar> Intersector for PgaPlucker<T> {
     type Real = T;
     type Prim = PgaPluckerPrim<T>;
     type RayData = PgaPluckerRay<T>;
+    type Block = ();
     const NAME: &'static str = "pga-plucker";
     const ALGEBRA: Algebra = Algebra::Pga;
     const METHOD: Method = Method::Plucker;

@@ -105,6 +105,7 @@ impl<T: Scalar> Intersector for PgaReport<T> {
     type Real = T;
     type Prim = PgaReportPrim<T>;
     type RayData = ();
+    type Block = ();
     const NAME: &'static str = "pga-report";
     const ALGEBRA: Algebra = Algebra::Pga;
     const METHOD: Method = Method::Report;

@@ -125,6 +125,7 @@ impl<T: Scalar> Intersector for PgaWatertight<T> {
     type Real = T;
     type Prim = PgaWatertightPrim<T>;
     type RayData = PgaWatertightRay<T>;
+    type Block = ();
     const NAME: &'static str = "pga-watertight";
     const ALGEBRA: Algebra = Algebra::Pga;
     const METHOD: Method = Method::Watertight;

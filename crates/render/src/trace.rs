@@ -365,6 +365,7 @@ mod tests {
         type Real = f64;
         type Prim = Triangle<f64>;
         type RayData = ();
+        type Block = ();
         const NAME: &'static str = "reference";
         const ALGEBRA: Algebra = Algebra::La;
         const METHOD: Method = Method::MollerTrumbore;

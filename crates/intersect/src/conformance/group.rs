@@ -17,7 +17,7 @@ type Event = (usize, usize, [u64; 3]);
 
 /// A scene of a few triangles: random ones, or the two halves of a lattice square (whose
 /// shared diagonal rays can meet exactly, so that the exact fallback and the tie rule run).
-fn triangles(rng: &mut Pcg64) -> Vec<Triangle<f64>> {
+pub(super) fn triangles(rng: &mut Pcg64) -> Vec<Triangle<f64>> {
     if rng.random_bool(0.5) {
         let z = f64::from(rng.random_range(-2..=2));
         let (a, b, c, d) = ([0.0, 0.0, z], [2.0, 0.0, z], [2.0, 2.0, z], [0.0, 2.0, z]);
@@ -32,7 +32,7 @@ fn triangles(rng: &mut Pcg64) -> Vec<Triangle<f64>> {
 /// A group of rays at `tris`: most from one origin (coherent, as a packet's), some towards
 /// the lattice square's edges and corners from integer origins (exact zeros), some with zero
 /// direction components, and now and then a NaN.
-fn rays(rng: &mut Pcg64, tris: &[Triangle<f64>]) -> Vec<Ray<f64>> {
+pub(super) fn rays(rng: &mut Pcg64, tris: &[Triangle<f64>]) -> Vec<Ray<f64>> {
     let origin = point(rng, 3.0);
     (0..rng.random_range(1..=70))
         .map(|_| {
@@ -80,7 +80,7 @@ fn expected<I: Intersector>(
     events
 }
 
-fn bits<T: Real>(h: TriangleHit<T>) -> [u64; 3] {
+pub(super) fn bits<T: Real>(h: TriangleHit<T>) -> [u64; 3] {
     [h.t, h.u, h.v].map(|x| x.to_f64().to_bits())
 }
 

@@ -17,6 +17,8 @@
 //!   agrees with `intersect` (on every call: [`contract::run`]).
 //! - [`group`]: `intersect_group` gives each ray of a group the hits of `intersect`, bit for
 //!   bit.
+//! - [`leaf`]: `intersect_leaf` and `occludes_leaf` answer as the loop over a leaf's triangles,
+//!   bit for bit, from the kernel's blocks laid out as a BVH lays them out.
 //! - [`reference`](mod@reference): the independent `f64` solver (Cramer's rule) and the fixed-seed
 //!   generators of triangles and rays, for the back ends' own accuracy tests too.
 //! - [`sweeps`]: agreement with the reference on random rays, then after scaling the scene
@@ -36,6 +38,7 @@
 pub mod contract;
 pub mod cracks;
 pub mod group;
+pub mod leaf;
 pub mod reference;
 pub mod sweeps;
 pub mod ties;
@@ -79,6 +82,7 @@ pub fn check_all<I: Intersector + Default>() {
     contract::axis_aligned_rays::<I>();
     contract::planes_on_both_sides_of_the_origin::<I>();
     group::group_agrees_with_single_rays::<I>();
+    leaf::leaf_agrees_with_one_by_one::<I>();
     sweeps::agrees_with_reference::<I>(g);
     sweeps::scale_sweep::<I>();
     sweeps::translation_sweep::<I>();
