@@ -113,8 +113,12 @@ pub fn trace_rays<I: Intersector>(
     assert!(rays.len().is_multiple_of(stride), "the rays are not whole rows of {stride}");
     let width = columns.count();
     assert_eq!(out.len(), rays.len() / stride * width, "the output is not one row per ray");
+    // Tasks of at most four blocks (`with_max_len`), so that uneven blocks (the rays of a
+    // camera where the mesh covers a few rows) are shared out in small pieces, as
+    // `render_frame` shares its bands.
     let blocks = rays.par_chunks(stride * RAYS_PER_BLOCK);
-    blocks.zip(out.par_chunks_mut(width * RAYS_PER_BLOCK)).for_each(|(rays, out)| {
+    let blocks = blocks.zip(out.par_chunks_mut(width * RAYS_PER_BLOCK)).with_max_len(4);
+    blocks.for_each(|(rays, out)| {
         for (r, h) in rays.chunks_exact(stride).zip(out.chunks_exact_mut(width)) {
             let ray = kernel_ray::<I::Real>(r, stride);
             if columns.any_hit {
