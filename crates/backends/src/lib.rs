@@ -56,9 +56,11 @@
 //!    [`Intersector::prepare`], in the same precision, the bytes per triangle reported in the
 //!    kernel's documentation (a cell may not precompute what its neighbours compute per ray).
 //!    Leaf blocks ([`Intersector::Block`]) lay out the same data for testing several triangles
-//!    at once; today only `la` has them (four triangles per test in glam's 4-vectors), so the
-//!    watertight row compares `la`'s blocks with the GA cells' one-by-one tests: a difference
-//!    of layout, not of algebra, until the GA cells test blocks in their own types too.
+//!    at once. The watertight row has them in every algebra, four triangles per test: `la` in
+//!    glam's 4-vectors, the GA cells in their own types on four-lane coefficients
+//!    (`ga::Lanes4`: `Vector<Lanes4<f32>>` is four vectors, and the generated products act
+//!    lane by lane), with the leaf stage of `kernels_g3::blocks`. The other rows test one
+//!    triangle at a time in every cell.
 //! 3. **The same decision order and tie rule**: the tests made in the same order (which
 //!    decides which branch ends most tests), the same closed or half-open edges, the same tie
 //!    rule and exact fallback for watertight methods, the same `t_max` slack.
@@ -68,7 +70,9 @@
 //!    `ga::cga` vectors, flats and dual planes for [`Algebra::Cga`], with no hand intrinsics and no
 //!    per-test code on raw arrays or lanes; what the generated products and the compiler make of
 //!    that is what is measured, so that the cost of writing a tracer in the algebra is the cost
-//!    reported.
+//!    reported. (A leaf block's products are the same types on `ga::Lanes4` coefficients; the
+//!    decisions on the values they give, signs, the distance test and the division, are on
+//!    scalars, or lane by lane on `Lanes4` in a block, as in every algebra of the row.)
 //!
 //! # Adding a back end
 //!

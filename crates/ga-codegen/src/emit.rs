@@ -393,7 +393,7 @@ impl Resolved<'_> {
                     }
                     write!(
                         code,
-                        "/// {doc}\nimpl<T: Scalar> {tr}<{b}> for {a} {{\n\
+                        "/// {doc}\nimpl<T: Coefficient> {tr}<{b}> for {a} {{\n\
                             type Output = {out};\n    \
                          #[inline]\n    fn {m}(self, b: {b}) -> {out} {{\n\
                          let a = self;\n        {expr}\n    }}\n}}\n\n",
@@ -435,7 +435,14 @@ impl Resolved<'_> {
             .map(|t| t.name)
             .filter(|n| code.contains(&format!("{n}<")) || code.contains(&format!("{n} {{")))
             .collect();
-        format!("use crate::Scalar;\nuse {}::{{{}}};\n\n", self.spec.module, names.join(", "))
+        let bounds: Vec<&str> =
+            [("crate::Coefficient", "T: Coefficient"), ("crate::Scalar", "T: Scalar")]
+                .into_iter()
+                .filter(|(_, bound)| code.contains(bound))
+                .map(|(path, _)| path)
+                .collect();
+        let uses: String = bounds.iter().map(|path| format!("use {path};\n")).collect();
+        format!("{uses}use {}::{{{}}};\n\n", self.spec.module, names.join(", "))
     }
 
     /// The sandwich kernels and the inherent methods forwarding to every method trait.
@@ -540,13 +547,13 @@ impl Resolved<'_> {
             self.construct(Some(t), &exprs)
         };
         format!(
-            "impl<T: Scalar> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+            "impl<T: Coefficient> Add for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
                 fn add(self, b: Self) -> Self {{\n        {add}\n    }}\n}}\n\n\
-             impl<T: Scalar> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             impl<T: Coefficient> Sub for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
              fn sub(self, b: Self) -> Self {{\n        {sub}\n    }}\n}}\n\n\
-             impl<T: Scalar> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             impl<T: Coefficient> Neg for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
              fn neg(self) -> Self {{\n        {neg}\n    }}\n}}\n\n\
-             impl<T: Scalar> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
+             impl<T: Coefficient> Mul<T> for {name}<T> {{\n    type Output = Self;\n    #[inline]\n\
              fn mul(self, k: T) -> Self {{\n        {mul}\n    }}\n}}\n\n\
              impl<T: Scalar> Div<T> for {name}<T> {{\n    type Output = Self;\n\
              /// Divides every coefficient by `k` (correctly rounded, like glam's).\n\
@@ -764,7 +771,7 @@ impl Resolved<'_> {
         }
         format!(
             "use core::ops::{{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, \
-                SubAssign}};\n\nuse crate::Scalar;\n\n{code}"
+                SubAssign}};\n\nuse crate::{{Coefficient, Scalar}};\n\n{code}"
         )
     }
 }

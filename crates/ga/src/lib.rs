@@ -89,6 +89,9 @@
 //!   (`e1` toward `e2` for `B = e12`). As a quaternion that is `w = s`,
 //!   `(x, y, z) = -(e23, e31, e12)`: the same rotation as glam's right-handed `Quat`.
 //! - **Scalars.** Every type is generic over [`Scalar`], implemented for `f32` and `f64` only.
+//!   The products, sums and negations take any [`Coefficient`], so that they also act on
+//!   [`Lanes4`], four floats side by side: `Vector<Lanes4<f32>>` is four vectors, and its
+//!   products are those of each lane, bit for bit ([`lanes`]).
 //!
 //! # The `glam` feature
 //!
@@ -106,10 +109,12 @@
 pub mod cga;
 pub mod errata;
 pub mod g3;
+pub mod lanes;
 pub mod pga;
 pub mod products;
 mod scalar;
 
+pub use lanes::{Coefficient, Lanes4};
 /// The workspace's one float trait, which [`Scalar`] extends: re-exported so that code using
 /// `ga` can name its items by path (`<T as ga::Real>::ZERO`, `.map(ga::Real::to_f64)`).
 pub use real::Real;

@@ -57,7 +57,7 @@ pub use frame::{CgaFrame, CgaFramePrim};
 pub use mt::{CgaMt, CgaMtPrim};
 pub use plucker::{CgaPlucker, CgaPluckerPrim, CgaPluckerRay};
 pub use report::{CgaReport, CgaReportPrim};
-pub use watertight::{CgaWatertight, CgaWatertightPrim, CgaWatertightRay};
+pub use watertight::{CgaWatertight, CgaWatertightBlock, CgaWatertightPrim, CgaWatertightRay};
 
 /// Re-exported from the seam: whether a triangle has zero area, decided exactly.
 pub use intersect::is_degenerate;

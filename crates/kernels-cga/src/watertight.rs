@@ -70,12 +70,14 @@
 
 use core::marker::PhantomData;
 
-use ga::Scalar;
 use ga::cga::{Trivector, Vector};
+use ga::lanes::Mask;
+use ga::{Coefficient, Lanes4, Scalar};
 use intersect::{Algebra, Guarantees, Intersector, Method, Ray, Real, Triangle, TriangleHit};
+use kernels_g3::blocks::{self, BLOCK, BlockHits, BlockTest};
 use kernels_g3::watertight::{decide_edges, finish};
 
-use crate::flat::{point, vector};
+use crate::flat::vector;
 use crate::{cross64, is_degenerate, round64};
 
 /// Watertight edge tests as outer products of points with the ray's flat line
@@ -121,11 +123,22 @@ pub struct CgaWatertightRay<T> {
     ey: Vector<T>,
 }
 
+/// What [`CgaWatertight`] keeps of [`BLOCK`] consecutive triangles for its leaf stage
+/// (`kernels_g3::blocks`): the same vertices and normals as four-lane [`Vector`]s, one
+/// triangle per lane (lanes past the scene's end hold zeros and are never tested). 320 B in
+/// `f32`, 640 B in `f64`, beside the [`CgaWatertightPrim`]s, which the exact fallback reads.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CgaWatertightBlock<T> {
+    vertices: [Vector<Lanes4<T>>; 3],
+    n: Vector<Lanes4<T>>,
+}
+
 impl<T: Scalar> Intersector for CgaWatertight<T> {
     type Real = T;
     type Prim = CgaWatertightPrim<T>;
     type RayData = CgaWatertightRay<T>;
-    type Block = ();
+    type Block = CgaWatertightBlock<T>;
+    const BLOCK: usize = BLOCK;
     const NAME: &'static str = "cga-watertight";
     const ALGEBRA: Algebra = Algebra::Cga;
     const METHOD: Method = Method::Watertight;
@@ -172,26 +185,131 @@ impl<T: Scalar> Intersector for CgaWatertight<T> {
     ) -> Option<TriangleHit<T>> {
         let CgaWatertightPrim { a, b, c, n } = *prim;
         let o = vector(ray.origin);
-        // Each vertex in the ray's frame, as the point eₒ + x e1 + y e2.
-        let seen = |v: Vector<T>| {
-            let s = v - o;
-            point(vector([s | rd.ex, s | rd.ey, T::ZERO]))
-        };
-        let [pa, pb, pc] = [a, b, c].map(seen);
-        // The ray's line in its own frame: eₒ ∧ e3 ∧ e∞ = e345.
-        let ray_line: Trivector<T> = Vector::E_O ^ Vector::E3 ^ Vector::E_INF;
-        let edge = |p: Vector<T>, q: Vector<T>| ((p ^ q) ^ ray_line).e12345;
+        let frame = [Vector::E_O, rd.ex, rd.ey];
+        let seen = |v: Vector<T>| seen_along(v, o, frame);
+        let [pa, pb, pc] = [seen(a), seen(b), seen(c)];
+        let line = ray_line();
+        let edge = |p, q| edge_value(p, q, line);
         // w_a is the edge opposite a, and so on.
         let w = [edge(pb, pc), edge(pc, pa), edge(pa, pb)];
         let w = decide_edges(w, || [pa, pb, pc].map(|p| [p.e1, p.e2]))?;
-        let (num, den) = (-(point(o - a) | n), vector(ray.dir) | n);
+        let (num, den) = (-((Vector::E_O + (o - a)) | n), vector(ray.dir) | n);
         finish(w, num, den, t_max)
+    }
+
+    fn prepare_blocks(&self, prims: &[CgaWatertightPrim<T>]) -> Vec<CgaWatertightBlock<T>> {
+        let split = |p: &CgaWatertightPrim<T>| {
+            let parts = [p.a, p.b, p.c, p.n].map(|v| [v.e1, v.e2, v.e3, v.e4, v.e5]);
+            core::array::from_fn::<T, 20, _>(|i| parts[i / 5][i % 5])
+        };
+        blocks::blocks_of(prims, split, |f: [Lanes4<T>; 20]| {
+            let v = |i: usize| Vector {
+                e1: f[i],
+                e2: f[i + 1],
+                e3: f[i + 2],
+                e4: f[i + 3],
+                e5: f[i + 4],
+            };
+            CgaWatertightBlock { vertices: [v(0), v(5), v(10)], n: v(15) }
+        })
+    }
+
+    kernels_g3::leaf_queries_in_blocks!();
+}
+
+/// A vertex `v` in the ray's frame, as the point `eₒ + x e1 + y e2` with `x = (v - o) · ex`,
+/// `y = (v - o) · ey`; `[e_o, ex, ey] = frame`. Written for any coefficient: one triangle's
+/// vertex in `T`, four triangles' in [`Lanes4`].
+#[inline(always)]
+fn seen_along<C: Coefficient>(v: Vector<C>, o: Vector<C>, frame: [Vector<C>; 3]) -> Vector<C> {
+    let [e_o, ex, ey] = frame;
+    let s = v - o;
+    let z = C::ZERO;
+    e_o + Vector { e1: s | ex, e2: s | ey, e3: z, e4: z, e5: z }
+}
+
+/// The ray's line in its own frame: `eₒ ∧ e3 ∧ e∞ = e345`.
+#[inline(always)]
+fn ray_line<T: Scalar>() -> Trivector<T> {
+    Vector::E_O ^ Vector::E3 ^ Vector::E_INF
+}
+
+/// `(P ∧ Q) ∧ L₀` for two vertices in the ray's frame (see the module documentation).
+#[inline(always)]
+fn edge_value<C: Coefficient>(p: Vector<C>, q: Vector<C>, line: Trivector<C>) -> C {
+    ((p ^ q) ^ line).e12345
+}
+
+/// The ray's origin, frame, line and direction in every lane, for the block tests.
+pub struct WideRay<T> {
+    o: Vector<Lanes4<T>>,
+    frame: [Vector<Lanes4<T>>; 3],
+    line: Trivector<Lanes4<T>>,
+    dir: Vector<Lanes4<T>>,
+}
+
+/// `v` in every lane.
+#[inline(always)]
+fn wide<T: Scalar>(v: Vector<T>) -> Vector<Lanes4<T>> {
+    let s = Lanes4::splat;
+    Vector { e1: s(v.e1), e2: s(v.e2), e3: s(v.e3), e4: s(v.e4), e5: s(v.e5) }
+}
+
+impl<T: Scalar> BlockTest for CgaWatertight<T> {
+    type Wide = WideRay<T>;
+
+    #[inline(always)]
+    fn wide(ray: &Ray<T>, rd: &CgaWatertightRay<T>) -> WideRay<T> {
+        let (l, s) = (ray_line::<T>(), Lanes4::splat);
+        let line = Trivector {
+            e123: s(l.e123),
+            e124: s(l.e124),
+            e125: s(l.e125),
+            e134: s(l.e134),
+            e135: s(l.e135),
+            e145: s(l.e145),
+            e234: s(l.e234),
+            e235: s(l.e235),
+            e245: s(l.e245),
+            e345: s(l.e345),
+        };
+        WideRay {
+            o: wide(vector(ray.origin)),
+            frame: [wide(Vector::E_O), wide(rd.ex), wide(rd.ey)],
+            line,
+            dir: wide(vector(ray.dir)),
+        }
+    }
+
+    /// `intersect` on four triangles at once: the same products on four-lane vectors, the
+    /// decisions of `kernels_g3::blocks`.
+    #[inline(always)]
+    fn block_test(
+        block: &CgaWatertightBlock<T>,
+        lanes: Mask,
+        wide: &WideRay<T>,
+        t_max: T,
+    ) -> BlockHits<T> {
+        let [a, b, c] = block.vertices;
+        let seen = |v| seen_along(v, wide.o, wide.frame);
+        let [pa, pb, pc] = [seen(a), seen(b), seen(c)];
+        let edge = |p, q| edge_value(p, q, wide.line);
+        let w = [edge(pb, pc), edge(pc, pa), edge(pa, pb)];
+        let (inside, fallback) = blocks::decide_edges(w, lanes);
+        if inside == 0 {
+            return (0, fallback, [[T::ZERO; BLOCK]; 3]);
+        }
+        let n = block.n;
+        let (num, den) = (-((wide.frame[0] + (wide.o - a)) | n), wide.dir | n);
+        let (hits, out) = blocks::finish(w, num, den, t_max);
+        (hits & inside, fallback, out)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flat::point;
 
     #[test]
     fn the_ray_line_in_its_frame_is_e345_and_edges_are_the_2d_orientation() {

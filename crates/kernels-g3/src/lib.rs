@@ -95,6 +95,7 @@
 
 #![deny(missing_docs)]
 
+pub mod blocks;
 pub mod frame;
 pub mod frame_cell;
 mod lanes;
@@ -112,7 +113,7 @@ pub use plucker::{G3Plucker, G3PluckerPrim, G3PluckerRay};
 pub use real::GaReal;
 pub use report::{G3Report, G3ReportPrim};
 pub use watertight::{G3Watertight, G3WatertightPrim, G3WatertightRay};
-pub use watertight_cell::{G3WatertightCell, G3WatertightCellPrim};
+pub use watertight_cell::{G3WatertightCell, G3WatertightCellBlock, G3WatertightCellPrim};
 
 /// Re-exported from the seam, where every back end finds it: whether a triangle has zero
 /// area (its bivector `(b - a) ∧ (c - a)` is exactly zero), decided exactly.

@@ -51,7 +51,7 @@ pub use frame::{PgaFrame, PgaFramePrim};
 pub use mt::{PgaMt, PgaMtPrim};
 pub use plucker::{PgaPlucker, PgaPluckerPrim, PgaPluckerRay};
 pub use report::{PgaReport, PgaReportPrim};
-pub use watertight::{PgaWatertight, PgaWatertightPrim, PgaWatertightRay};
+pub use watertight::{PgaWatertight, PgaWatertightBlock, PgaWatertightPrim, PgaWatertightRay};
 
 use ga::Scalar;
 use ga::pga::{Line, Plane, Point};

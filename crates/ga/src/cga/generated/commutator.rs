@@ -6,12 +6,12 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::cga::{Bivector, Motor, Multivector, Quadvector, Rotor, Trivector, Vector};
 use crate::products::Commutator;
 
 /// Commutator product `Vector × Vector -> Bivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Bivector<T> {
@@ -32,7 +32,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Bivector -> Vector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Vector<T> {
@@ -48,7 +48,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Trivector -> Quadvector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Quadvector<T> {
@@ -64,7 +64,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Quadvector -> Trivector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Trivector<T> {
@@ -85,7 +85,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Rotor -> Vector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Vector<T> {
@@ -101,7 +101,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -144,7 +144,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -187,7 +187,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Vector<T> {
 }
 
 /// Commutator product `Bivector × Vector -> Vector`.
-impl<T: Scalar> Commutator<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Vector<T> {
@@ -203,7 +203,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Bivector -> Bivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Bivector<T> {
@@ -240,7 +240,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Trivector -> Trivector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Trivector<T> {
@@ -284,7 +284,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Quadvector -> Quadvector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Bivector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Quadvector<T> {
@@ -300,7 +300,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Rotor -> Bivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Bivector<T> {
@@ -321,7 +321,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Motor -> Motor`.
-impl<T: Scalar> Commutator<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Motor<T> {
@@ -364,7 +364,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -446,7 +446,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Trivector × Vector -> Quadvector`.
-impl<T: Scalar> Commutator<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Trivector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Quadvector<T> {
@@ -462,7 +462,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Bivector -> Trivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Trivector<T> {
@@ -506,7 +506,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Trivector -> Bivector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Bivector<T> {
@@ -551,7 +551,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Quadvector -> Vector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Vector<T> {
@@ -567,7 +567,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Rotor -> Trivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Trivector<T> {
@@ -588,7 +588,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -654,7 +654,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Trivector<T> {
 }
 
 /// Commutator product `Trivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -744,7 +744,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Trivector<T> {
 }
 
 /// Commutator product `Quadvector × Vector -> Trivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Quadvector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Trivector<T> {
@@ -765,7 +765,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Bivector -> Quadvector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Quadvector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Quadvector<T> {
@@ -781,7 +781,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Trivector -> Vector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Vector<T> {
@@ -797,7 +797,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Quadvector -> Bivector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Quadvector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Bivector<T> {
@@ -818,7 +818,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Rotor -> Quadvector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Quadvector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Quadvector<T> {
@@ -834,7 +834,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Motor -> Motor`.
-impl<T: Scalar> Commutator<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Motor<T> {
@@ -861,7 +861,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Quadvector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -904,7 +904,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Quadvector<T> {
 }
 
 /// Commutator product `Rotor × Vector -> Vector`.
-impl<T: Scalar> Commutator<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Vector<T> {
@@ -920,7 +920,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Bivector -> Bivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Bivector<T> {
@@ -941,7 +941,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Trivector -> Trivector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Rotor<T> {
     type Output = Trivector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Trivector<T> {
@@ -962,7 +962,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Quadvector -> Quadvector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Rotor<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Quadvector<T> {
@@ -978,7 +978,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Rotor -> Bivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Bivector<T> {
@@ -999,7 +999,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Motor -> Motor`.
-impl<T: Scalar> Commutator<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Motor<T> {
@@ -1026,7 +1026,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -1069,7 +1069,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Motor × Vector -> Multivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Multivector<T> {
@@ -1112,7 +1112,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Bivector -> Motor`.
-impl<T: Scalar> Commutator<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Motor<T> {
@@ -1155,7 +1155,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Trivector -> Multivector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Multivector<T> {
@@ -1221,7 +1221,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Quadvector -> Motor`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Motor<T> {
@@ -1248,7 +1248,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Rotor -> Motor`.
-impl<T: Scalar> Commutator<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Motor<T> {
@@ -1275,7 +1275,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Motor -> Motor`.
-impl<T: Scalar> Commutator<Motor<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Motor<T> {
@@ -1358,7 +1358,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -1515,7 +1515,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Motor<T> {
 }
 
 /// Commutator product `Multivector × Vector -> Multivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Multivector<T> {
@@ -1558,7 +1558,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Bivector -> Multivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Multivector<T> {
@@ -1640,7 +1640,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Trivector -> Multivector`.
-impl<T: Scalar> Commutator<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Trivector<T>) -> Multivector<T> {
@@ -1730,7 +1730,7 @@ impl<T: Scalar> Commutator<Trivector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Quadvector -> Multivector`.
-impl<T: Scalar> Commutator<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1773,7 +1773,7 @@ impl<T: Scalar> Commutator<Quadvector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Rotor -> Multivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Multivector<T> {
@@ -1816,7 +1816,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -1978,7 +1978,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {

@@ -7,14 +7,14 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::cga::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
 };
 use crate::products::{LeftContraction, RightContraction, ScalarProduct};
 
 /// Left contraction `Vector ⌋ Vector -> scalar`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> T {
@@ -24,7 +24,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Bivector -> Vector`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Vector<T> {
@@ -40,7 +40,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Trivector -> Bivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Bivector<T> {
@@ -61,7 +61,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Quadvector -> Trivector`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Trivector<T> {
@@ -82,7 +82,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Pseudoscalar -> Quadvector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Quadvector<T> {
@@ -98,7 +98,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Rotor -> Vector`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Vector<T> {
@@ -114,7 +114,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Motor -> Multivector`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -157,7 +157,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -200,7 +200,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Bivector -> scalar`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> T {
@@ -219,7 +219,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Trivector -> Vector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Vector<T> {
@@ -250,7 +250,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Quadvector -> Bivector`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Bivector<T> {
@@ -271,7 +271,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Pseudoscalar -> Trivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Trivector<T> {
@@ -292,7 +292,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Rotor -> scalar`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> T {
@@ -302,7 +302,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -338,7 +338,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -405,7 +405,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Trivector -> scalar`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> T {
@@ -421,7 +421,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Trivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Quadvector -> Vector`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Vector<T> {
@@ -437,7 +437,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Trivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Pseudoscalar -> Bivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Bivector<T> {
@@ -458,7 +458,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Trivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Motor -> Vector`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Vector<T> {
@@ -474,7 +474,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Trivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -523,7 +523,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Trivector<T> {
 }
 
 /// Left contraction `Quadvector ⌋ Quadvector -> scalar`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> T {
@@ -537,7 +537,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Left contraction `Quadvector ⌋ Pseudoscalar -> Vector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Quadvector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Vector<T> {
@@ -553,7 +553,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Quadvector<T> {
 }
 
 /// Left contraction `Quadvector ⌋ Motor -> scalar`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> T {
@@ -567,7 +567,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Quadvector<T> {
 }
 
 /// Left contraction `Quadvector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -614,7 +614,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Quadvector<T> {
 }
 
 /// Left contraction `Pseudoscalar ⌋ Pseudoscalar -> scalar`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> T {
@@ -624,7 +624,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Left contraction `Pseudoscalar ⌋ Multivector -> scalar`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> T {
@@ -634,7 +634,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Left contraction `Rotor ⌋ Vector -> Vector`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -644,7 +644,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Bivector -> Motor`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Motor<T> {
@@ -671,7 +671,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Trivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -714,7 +714,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Quadvector -> Motor`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Motor<T> {
@@ -741,7 +741,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Pseudoscalar -> Multivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -784,7 +784,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -799,7 +799,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -826,7 +826,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -869,7 +869,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Motor ⌋ Vector -> Vector`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -879,7 +879,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Bivector -> Motor`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Motor<T> {
@@ -915,7 +915,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Trivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -973,7 +973,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Quadvector -> Motor`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Motor<T> {
@@ -1004,7 +1004,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Pseudoscalar -> Multivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1047,7 +1047,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Motor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -1062,7 +1062,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -1100,7 +1100,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1177,7 +1177,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Motor<T> {
 }
 
 /// Left contraction `Multivector ⌋ Vector -> Multivector`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> Multivector<T> {
@@ -1220,7 +1220,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Bivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Multivector<T> {
@@ -1272,7 +1272,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Trivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -1336,7 +1336,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Quadvector -> Multivector`.
-impl<T: Scalar> LeftContraction<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1383,7 +1383,7 @@ impl<T: Scalar> LeftContraction<Quadvector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Pseudoscalar -> Multivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1426,7 +1426,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Rotor -> Multivector`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -1469,7 +1469,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Motor -> Multivector`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -1540,7 +1540,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1707,7 +1707,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Vector ⌊ Vector -> scalar`.
-impl<T: Scalar> RightContraction<Vector<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> T {
@@ -1717,7 +1717,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Vector<T> {
 }
 
 /// Right contraction `Vector ⌊ Rotor -> Vector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Vector<T> {
@@ -1727,7 +1727,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Vector<T> {
 }
 
 /// Right contraction `Vector ⌊ Motor -> Vector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Vector<T> {
@@ -1737,7 +1737,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Vector<T> {
 }
 
 /// Right contraction `Vector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1780,7 +1780,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Vector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Vector -> Vector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -1796,7 +1796,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Bivector -> scalar`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> T {
@@ -1815,7 +1815,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -1842,7 +1842,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -1878,7 +1878,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1930,7 +1930,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Vector -> Bivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Bivector<T> {
@@ -1951,7 +1951,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Bivector -> Vector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Vector<T> {
@@ -1982,7 +1982,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Trivector -> scalar`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> T {
@@ -1998,7 +1998,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -2041,7 +2041,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Motor -> Multivector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -2099,7 +2099,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -2163,7 +2163,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Vector -> Trivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Quadvector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Trivector<T> {
@@ -2184,7 +2184,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Bivector -> Bivector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Quadvector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Bivector<T> {
@@ -2205,7 +2205,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Trivector -> Vector`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> Vector<T> {
@@ -2221,7 +2221,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Quadvector -> scalar`.
-impl<T: Scalar> RightContraction<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Quadvector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Quadvector<T>) -> T {
@@ -2235,7 +2235,7 @@ impl<T: Scalar> RightContraction<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -2262,7 +2262,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -2293,7 +2293,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Quadvector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -2340,7 +2340,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Quadvector<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Vector -> Quadvector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Pseudoscalar<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Quadvector<T> {
@@ -2356,7 +2356,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Bivector -> Trivector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Pseudoscalar<T> {
     type Output = Trivector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Trivector<T> {
@@ -2377,7 +2377,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Trivector -> Bivector`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Pseudoscalar<T> {
     type Output = Bivector<T>;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> Bivector<T> {
@@ -2398,7 +2398,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Quadvector -> Vector`.
-impl<T: Scalar> RightContraction<Quadvector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Quadvector<T>> for Pseudoscalar<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Quadvector<T>) -> Vector<T> {
@@ -2414,7 +2414,7 @@ impl<T: Scalar> RightContraction<Quadvector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Pseudoscalar -> scalar`.
-impl<T: Scalar> RightContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Pseudoscalar<T>) -> T {
@@ -2424,7 +2424,7 @@ impl<T: Scalar> RightContraction<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -2467,7 +2467,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Motor -> Multivector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -2510,7 +2510,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -2553,7 +2553,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Rotor ⌊ Vector -> Vector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -2569,7 +2569,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Bivector -> scalar`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> T {
@@ -2579,7 +2579,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Rotor -> Rotor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -2594,7 +2594,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Motor -> Rotor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Rotor<T> {
@@ -2609,7 +2609,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -2652,7 +2652,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Motor ⌊ Vector -> Multivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Multivector<T> {
@@ -2695,7 +2695,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Bivector -> Motor`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Motor<T> {
@@ -2731,7 +2731,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Trivector -> Vector`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> Vector<T> {
@@ -2747,7 +2747,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Quadvector -> scalar`.
-impl<T: Scalar> RightContraction<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Quadvector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Quadvector<T>) -> T {
@@ -2761,7 +2761,7 @@ impl<T: Scalar> RightContraction<Quadvector<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -2788,7 +2788,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -2826,7 +2826,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -2895,7 +2895,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Motor<T> {
 }
 
 /// Right contraction `Multivector ⌊ Vector -> Multivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Multivector<T> {
@@ -2938,7 +2938,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Bivector -> Multivector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Multivector<T> {
@@ -3005,7 +3005,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Trivector -> Multivector`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -3054,7 +3054,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Quadvector -> Multivector`.
-impl<T: Scalar> RightContraction<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Quadvector<T>) -> Multivector<T> {
@@ -3101,7 +3101,7 @@ impl<T: Scalar> RightContraction<Quadvector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Pseudoscalar -> scalar`.
-impl<T: Scalar> RightContraction<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Pseudoscalar<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Pseudoscalar<T>) -> T {
@@ -3111,7 +3111,7 @@ impl<T: Scalar> RightContraction<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -3154,7 +3154,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Motor -> Multivector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -3231,7 +3231,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -3407,7 +3407,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Vector ∗ Vector -> scalar`.
-impl<T: Scalar> ScalarProduct<Vector<T>> for Vector<T> {
+impl<T: Coefficient> ScalarProduct<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Vector<T>) -> T {
@@ -3417,7 +3417,7 @@ impl<T: Scalar> ScalarProduct<Vector<T>> for Vector<T> {
 }
 
 /// Scalar product `Vector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3427,7 +3427,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Vector<T> {
 }
 
 /// Scalar product `Bivector ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -3446,7 +3446,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Bivector<T> {
 }
 
 /// Scalar product `Bivector ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -3456,7 +3456,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Bivector<T> {
 }
 
 /// Scalar product `Bivector ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -3475,7 +3475,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Bivector<T> {
 }
 
 /// Scalar product `Bivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3494,7 +3494,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Bivector<T> {
 }
 
 /// Scalar product `Trivector ∗ Trivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> ScalarProduct<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Trivector<T>) -> T {
@@ -3510,7 +3510,7 @@ impl<T: Scalar> ScalarProduct<Trivector<T>> for Trivector<T> {
 }
 
 /// Scalar product `Trivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3526,7 +3526,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Trivector<T> {
 }
 
 /// Scalar product `Quadvector ∗ Quadvector -> scalar`.
-impl<T: Scalar> ScalarProduct<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> ScalarProduct<Quadvector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Quadvector<T>) -> T {
@@ -3540,7 +3540,7 @@ impl<T: Scalar> ScalarProduct<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Scalar product `Quadvector ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -3554,7 +3554,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Quadvector<T> {
 }
 
 /// Scalar product `Quadvector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3568,7 +3568,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Quadvector<T> {
 }
 
 /// Scalar product `Pseudoscalar ∗ Pseudoscalar -> scalar`.
-impl<T: Scalar> ScalarProduct<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> ScalarProduct<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Pseudoscalar<T>) -> T {
@@ -3578,7 +3578,7 @@ impl<T: Scalar> ScalarProduct<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Scalar product `Pseudoscalar ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3588,7 +3588,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Scalar product `Rotor ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -3598,7 +3598,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -3608,7 +3608,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -3618,7 +3618,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3628,7 +3628,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
 }
 
 /// Scalar product `Motor ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -3647,7 +3647,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Quadvector -> scalar`.
-impl<T: Scalar> ScalarProduct<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Quadvector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Quadvector<T>) -> T {
@@ -3661,7 +3661,7 @@ impl<T: Scalar> ScalarProduct<Quadvector<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -3671,7 +3671,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -3692,7 +3692,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -3713,7 +3713,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Motor<T> {
 }
 
 /// Scalar product `Multivector ∗ Vector -> scalar`.
-impl<T: Scalar> ScalarProduct<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Vector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Vector<T>) -> T {
@@ -3723,7 +3723,7 @@ impl<T: Scalar> ScalarProduct<Vector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -3742,7 +3742,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Trivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Trivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Trivector<T>) -> T {
@@ -3758,7 +3758,7 @@ impl<T: Scalar> ScalarProduct<Trivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Quadvector -> scalar`.
-impl<T: Scalar> ScalarProduct<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Quadvector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Quadvector<T>) -> T {
@@ -3772,7 +3772,7 @@ impl<T: Scalar> ScalarProduct<Quadvector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Pseudoscalar -> scalar`.
-impl<T: Scalar> ScalarProduct<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Pseudoscalar<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Pseudoscalar<T>) -> T {
@@ -3782,7 +3782,7 @@ impl<T: Scalar> ScalarProduct<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -3792,7 +3792,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -3813,7 +3813,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {

@@ -8,13 +8,14 @@
 
 use core::ops::Mul;
 
+use crate::Coefficient;
 use crate::Scalar;
 use crate::cga::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
 };
 
 /// Geometric product `Vector * Vector -> Motor`.
-impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Vector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Motor<T> {
@@ -41,7 +42,7 @@ impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
@@ -84,7 +85,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Trivector -> Motor`.
-impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Vector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Motor<T> {
@@ -111,7 +112,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Quadvector -> Multivector`.
-impl<T: Scalar> Mul<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Multivector<T> {
@@ -155,7 +156,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Pseudoscalar -> Quadvector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Quadvector<T> {
@@ -171,7 +172,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -214,7 +215,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -258,7 +259,7 @@ impl<T: Scalar> Mul<Motor<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -302,7 +303,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Bivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -345,7 +346,7 @@ impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Bivector -> Motor`.
-impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Motor<T> {
@@ -402,7 +403,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -489,7 +490,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Quadvector -> Motor`.
-impl<T: Scalar> Mul<Quadvector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Motor<T> {
@@ -516,7 +517,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Pseudoscalar -> Trivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Trivector<T> {
@@ -537,7 +538,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -564,7 +565,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -694,7 +695,7 @@ impl<T: Scalar> Mul<Motor<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -943,7 +944,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Trivector * Vector -> Motor`.
-impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Trivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Motor<T> {
@@ -970,7 +971,7 @@ impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
@@ -1057,7 +1058,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Trivector -> Motor`.
-impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Trivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Motor<T> {
@@ -1124,7 +1125,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Quadvector -> Multivector`.
-impl<T: Scalar> Mul<Quadvector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1167,7 +1168,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Pseudoscalar -> Bivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Bivector<T> {
@@ -1188,7 +1189,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -1231,7 +1232,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -1383,7 +1384,7 @@ impl<T: Scalar> Mul<Motor<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -1644,7 +1645,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Quadvector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -1688,7 +1689,7 @@ impl<T: Scalar> Mul<Vector<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Bivector -> Motor`.
-impl<T: Scalar> Mul<Bivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Motor<T> {
@@ -1715,7 +1716,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -1758,7 +1759,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Quadvector -> Motor`.
-impl<T: Scalar> Mul<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Motor<T> {
@@ -1789,7 +1790,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Pseudoscalar -> Vector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Vector<T> {
@@ -1805,7 +1806,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -1832,7 +1833,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Quadvector<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -1893,7 +1894,7 @@ impl<T: Scalar> Mul<Motor<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Quadvector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -2012,7 +2013,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Quadvector<T> {
 }
 
 /// Geometric product `Pseudoscalar * Vector -> Quadvector`.
-impl<T: Scalar> Mul<Vector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Pseudoscalar<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Quadvector<T> {
@@ -2028,7 +2029,7 @@ impl<T: Scalar> Mul<Vector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Bivector -> Trivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Pseudoscalar<T> {
     type Output = Trivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Trivector<T> {
@@ -2049,7 +2050,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Trivector -> Bivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Pseudoscalar<T> {
     type Output = Bivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Bivector<T> {
@@ -2070,7 +2071,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Quadvector -> Vector`.
-impl<T: Scalar> Mul<Quadvector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Pseudoscalar<T> {
     type Output = Vector<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Vector<T> {
@@ -2086,7 +2087,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Pseudoscalar -> scalar`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> T {
@@ -2096,7 +2097,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -2139,7 +2140,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -2182,7 +2183,7 @@ impl<T: Scalar> Mul<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -2225,7 +2226,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Rotor * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -2268,7 +2269,7 @@ impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Bivector -> Motor`.
-impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Motor<T> {
@@ -2295,7 +2296,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -2338,7 +2339,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Quadvector -> Motor`.
-impl<T: Scalar> Mul<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Motor<T> {
@@ -2365,7 +2366,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Pseudoscalar -> Multivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -2408,7 +2409,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Rotor -> Rotor`.
-impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Rotor<T> {
@@ -2423,7 +2424,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -2450,7 +2451,7 @@ impl<T: Scalar> Mul<Motor<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -2493,7 +2494,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Motor * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -2537,7 +2538,7 @@ impl<T: Scalar> Mul<Vector<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Bivector -> Motor`.
-impl<T: Scalar> Mul<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Motor<T> {
@@ -2655,7 +2656,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -2792,7 +2793,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Quadvector -> Motor`.
-impl<T: Scalar> Mul<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Motor<T> {
@@ -2847,7 +2848,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Pseudoscalar -> Multivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -2890,7 +2891,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -2917,7 +2918,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -3134,7 +3135,7 @@ impl<T: Scalar> Mul<Motor<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -3565,7 +3566,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Motor<T> {
 }
 
 /// Geometric product `Multivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -3609,7 +3610,7 @@ impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
@@ -3835,7 +3836,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -4065,7 +4066,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Quadvector -> Multivector`.
-impl<T: Scalar> Mul<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Quadvector<T>) -> Multivector<T> {
@@ -4164,7 +4165,7 @@ impl<T: Scalar> Mul<Quadvector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Pseudoscalar -> Multivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -4207,7 +4208,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -4250,7 +4251,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {

@@ -8,13 +8,13 @@
 
 use core::ops::BitOr;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::cga::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
 };
 
 /// Inner product `Vector | Vector -> scalar`.
-impl<T: Scalar> BitOr<Vector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Vector<T>) -> T {
@@ -24,7 +24,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Bivector -> Vector`.
-impl<T: Scalar> BitOr<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Vector<T> {
@@ -40,7 +40,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Trivector -> Bivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Bivector<T> {
@@ -61,7 +61,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Quadvector -> Trivector`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Trivector<T> {
@@ -82,7 +82,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Pseudoscalar -> Quadvector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Quadvector<T> {
@@ -98,7 +98,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Rotor -> Vector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Vector<T> {
@@ -114,7 +114,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Motor -> Multivector`.
-impl<T: Scalar> BitOr<Motor<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Multivector<T> {
@@ -157,7 +157,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -200,7 +200,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
 }
 
 /// Inner product `Bivector | Bivector -> scalar`.
-impl<T: Scalar> BitOr<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> T {
@@ -219,7 +219,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Trivector -> Vector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Vector<T> {
@@ -250,7 +250,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Quadvector -> Bivector`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Bivector<T> {
@@ -271,7 +271,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Pseudoscalar -> Trivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Trivector<T> {
@@ -292,7 +292,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Rotor -> scalar`.
-impl<T: Scalar> BitOr<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> T {
@@ -302,7 +302,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -338,7 +338,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -405,7 +405,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Trivector | Trivector -> scalar`.
-impl<T: Scalar> BitOr<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> T {
@@ -421,7 +421,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Quadvector -> Vector`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Vector<T> {
@@ -437,7 +437,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Pseudoscalar -> Bivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Bivector<T> {
@@ -458,7 +458,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Motor -> Vector`.
-impl<T: Scalar> BitOr<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Vector<T> {
@@ -474,7 +474,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -523,7 +523,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Trivector<T> {
 }
 
 /// Inner product `Quadvector | Quadvector -> scalar`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> T {
@@ -537,7 +537,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Inner product `Quadvector | Pseudoscalar -> Vector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Quadvector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Vector<T> {
@@ -553,7 +553,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Quadvector<T> {
 }
 
 /// Inner product `Quadvector | Motor -> scalar`.
-impl<T: Scalar> BitOr<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Motor<T>) -> T {
@@ -567,7 +567,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Quadvector<T> {
 }
 
 /// Inner product `Quadvector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -614,7 +614,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Quadvector<T> {
 }
 
 /// Inner product `Pseudoscalar | Pseudoscalar -> scalar`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> T {
@@ -624,7 +624,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Multivector -> scalar`.
-impl<T: Scalar> BitOr<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Pseudoscalar<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> T {
@@ -634,7 +634,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Rotor | Vector -> Vector`.
-impl<T: Scalar> BitOr<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Vector<T> {
@@ -644,7 +644,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Bivector -> Motor`.
-impl<T: Scalar> BitOr<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Motor<T> {
@@ -671,7 +671,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Trivector -> Multivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Multivector<T> {
@@ -714,7 +714,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Quadvector -> Motor`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Motor<T> {
@@ -741,7 +741,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -784,7 +784,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Rotor -> Rotor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Rotor<T> {
@@ -799,7 +799,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -826,7 +826,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -869,7 +869,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Motor | Vector -> Vector`.
-impl<T: Scalar> BitOr<Vector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Vector<T> {
@@ -879,7 +879,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Bivector -> Motor`.
-impl<T: Scalar> BitOr<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Motor<T> {
@@ -915,7 +915,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Trivector -> Multivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Multivector<T> {
@@ -973,7 +973,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Quadvector -> Motor`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Motor<T> {
@@ -1004,7 +1004,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1047,7 +1047,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Rotor -> Rotor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Motor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Rotor<T> {
@@ -1062,7 +1062,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -1100,7 +1100,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -1177,7 +1177,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Motor<T> {
 }
 
 /// Inner product `Multivector | Vector -> Multivector`.
-impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Multivector<T> {
@@ -1220,7 +1220,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Bivector -> Multivector`.
-impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Multivector<T> {
@@ -1272,7 +1272,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Trivector -> Multivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Multivector<T> {
@@ -1336,7 +1336,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Quadvector -> Multivector`.
-impl<T: Scalar> BitOr<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1383,7 +1383,7 @@ impl<T: Scalar> BitOr<Quadvector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1426,7 +1426,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Rotor -> Multivector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Multivector<T> {
@@ -1469,7 +1469,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Motor -> Multivector`.
-impl<T: Scalar> BitOr<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Multivector<T> {
@@ -1540,7 +1540,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {

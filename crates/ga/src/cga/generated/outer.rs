@@ -8,13 +8,13 @@
 
 use core::ops::BitXor;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::cga::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
 };
 
 /// Outer product `Vector ^ Vector -> Bivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Bivector<T> {
@@ -35,7 +35,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Bivector -> Trivector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Trivector<T> {
@@ -56,7 +56,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Trivector -> Quadvector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Vector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Quadvector<T> {
@@ -72,7 +72,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Quadvector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Quadvector<T>> for Vector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Quadvector<T>) -> Pseudoscalar<T> {
@@ -85,7 +85,7 @@ impl<T: Scalar> BitXor<Quadvector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -128,7 +128,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Motor -> Multivector`.
-impl<T: Scalar> BitXor<Motor<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Multivector<T> {
@@ -172,7 +172,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -216,7 +216,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
 }
 
 /// Outer product `Bivector ^ Vector -> Trivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Trivector<T> {
@@ -237,7 +237,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Bivector -> Quadvector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Bivector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Quadvector<T> {
@@ -258,7 +258,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Trivector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Bivector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Pseudoscalar<T> {
@@ -276,7 +276,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Rotor -> Motor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Motor<T> {
@@ -303,7 +303,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Bivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -335,7 +335,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -389,7 +389,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Bivector<T> {
 }
 
 /// Outer product `Trivector ^ Vector -> Quadvector`.
-impl<T: Scalar> BitXor<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Trivector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Quadvector<T> {
@@ -405,7 +405,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Trivector<T> {
 }
 
 /// Outer product `Trivector ^ Bivector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Trivector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Pseudoscalar<T> {
@@ -423,7 +423,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Trivector<T> {
 }
 
 /// Outer product `Trivector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -466,7 +466,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Trivector<T> {
 }
 
 /// Outer product `Trivector ^ Motor -> Multivector`.
-impl<T: Scalar> BitXor<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Multivector<T> {
@@ -515,7 +515,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Trivector<T> {
 }
 
 /// Outer product `Trivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -564,7 +564,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Trivector<T> {
 }
 
 /// Outer product `Quadvector ^ Vector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Vector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Quadvector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Pseudoscalar<T> {
@@ -577,7 +577,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Quadvector<T> {
 }
 
 /// Outer product `Quadvector ^ Rotor -> Quadvector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Quadvector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Quadvector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Quadvector<T> {
@@ -593,7 +593,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Quadvector<T> {
 }
 
 /// Outer product `Quadvector ^ Motor -> Quadvector`.
-impl<T: Scalar> BitXor<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Quadvector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Quadvector<T> {
@@ -609,7 +609,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Quadvector<T> {
 }
 
 /// Outer product `Quadvector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -653,7 +653,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Quadvector<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Rotor -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Pseudoscalar<T> {
@@ -663,7 +663,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Motor -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Pseudoscalar<T> {
@@ -673,7 +673,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Multivector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Pseudoscalar<T> {
@@ -683,7 +683,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Rotor ^ Vector -> Multivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
@@ -726,7 +726,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Bivector -> Motor`.
-impl<T: Scalar> BitXor<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Motor<T> {
@@ -753,7 +753,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Trivector -> Multivector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Multivector<T> {
@@ -796,7 +796,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Quadvector -> Quadvector`.
-impl<T: Scalar> BitXor<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Quadvector<T>> for Rotor<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Quadvector<T>) -> Quadvector<T> {
@@ -812,7 +812,7 @@ impl<T: Scalar> BitXor<Quadvector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Rotor<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -822,7 +822,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Rotor -> Rotor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Rotor<T> {
@@ -837,7 +837,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -864,7 +864,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -907,7 +907,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Motor ^ Vector -> Multivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
@@ -951,7 +951,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Bivector -> Motor`.
-impl<T: Scalar> BitXor<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Motor<T> {
@@ -983,7 +983,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Trivector -> Multivector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Multivector<T> {
@@ -1032,7 +1032,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Quadvector -> Quadvector`.
-impl<T: Scalar> BitXor<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Quadvector<T>> for Motor<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitxor(self, b: Quadvector<T>) -> Quadvector<T> {
@@ -1048,7 +1048,7 @@ impl<T: Scalar> BitXor<Quadvector<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Motor<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -1058,7 +1058,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Rotor -> Motor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Motor<T> {
@@ -1085,7 +1085,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -1127,7 +1127,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -1197,7 +1197,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Motor<T> {
 }
 
 /// Outer product `Multivector ^ Vector -> Multivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
@@ -1241,7 +1241,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Bivector -> Multivector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Multivector<T> {
@@ -1295,7 +1295,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Trivector -> Multivector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Multivector<T> {
@@ -1344,7 +1344,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Quadvector -> Multivector`.
-impl<T: Scalar> BitXor<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1388,7 +1388,7 @@ impl<T: Scalar> BitXor<Quadvector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Multivector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -1398,7 +1398,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -1441,7 +1441,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Motor -> Multivector`.
-impl<T: Scalar> BitXor<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Multivector<T> {
@@ -1511,7 +1511,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {

@@ -8,13 +8,13 @@
 
 use core::ops::BitAnd;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::cga::{
     Bivector, Motor, Multivector, Pseudoscalar, Quadvector, Rotor, Trivector, Vector,
 };
 
 /// Regressive product `Vector & Quadvector -> scalar`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> T {
@@ -24,7 +24,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Pseudoscalar -> Vector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Vector<T> {
@@ -40,7 +40,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Motor -> scalar`.
-impl<T: Scalar> BitAnd<Motor<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Motor<T>) -> T {
@@ -50,7 +50,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -93,7 +93,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Vector<T> {
 }
 
 /// Regressive product `Bivector & Trivector -> scalar`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> T {
@@ -108,7 +108,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Quadvector -> Vector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Vector<T> {
@@ -124,7 +124,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Pseudoscalar -> Bivector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Bivector<T> {
@@ -145,7 +145,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Motor -> Vector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Vector<T> {
@@ -161,7 +161,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -209,7 +209,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Trivector & Bivector -> scalar`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> T {
@@ -224,7 +224,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Trivector -> Vector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Vector<T> {
@@ -250,7 +250,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Quadvector -> Bivector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Bivector<T> {
@@ -271,7 +271,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Pseudoscalar -> Trivector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Trivector<T> {
@@ -292,7 +292,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Rotor -> scalar`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> T {
@@ -302,7 +302,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Motor -> Motor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Trivector<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Motor<T> {
@@ -334,7 +334,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -392,7 +392,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Quadvector & Vector -> scalar`.
-impl<T: Scalar> BitAnd<Vector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Quadvector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Vector<T>) -> T {
@@ -402,7 +402,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Bivector -> Vector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Vector<T> {
@@ -418,7 +418,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Trivector -> Bivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Quadvector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Bivector<T> {
@@ -439,7 +439,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Quadvector -> Trivector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Quadvector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Trivector<T> {
@@ -460,7 +460,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Pseudoscalar -> Quadvector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Quadvector<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Quadvector<T> {
@@ -476,7 +476,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Rotor -> Vector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Quadvector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Vector<T> {
@@ -492,7 +492,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Motor -> Multivector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Multivector<T> {
@@ -535,7 +535,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Quadvector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Quadvector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Quadvector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -578,7 +578,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Quadvector<T> {
 }
 
 /// Regressive product `Pseudoscalar & Vector -> Vector`.
-impl<T: Scalar> BitAnd<Vector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Pseudoscalar<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Vector<T>) -> Vector<T> {
@@ -594,7 +594,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Bivector -> Bivector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Pseudoscalar<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Bivector<T> {
@@ -615,7 +615,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Trivector -> Trivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Pseudoscalar<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Trivector<T> {
@@ -636,7 +636,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Quadvector -> Quadvector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Pseudoscalar<T> {
     type Output = Quadvector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Quadvector<T> {
@@ -652,7 +652,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -662,7 +662,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Rotor -> Rotor`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Pseudoscalar<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Rotor<T> {
@@ -677,7 +677,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Motor -> Motor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Motor<T> {
@@ -704,7 +704,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -747,7 +747,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Rotor & Trivector -> scalar`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> T {
@@ -757,7 +757,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Quadvector -> Vector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Vector<T> {
@@ -773,7 +773,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Pseudoscalar -> Rotor`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Rotor<T> {
@@ -788,7 +788,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Motor -> Vector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Vector<T> {
@@ -804,7 +804,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -847,7 +847,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Motor & Vector -> scalar`.
-impl<T: Scalar> BitAnd<Vector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Vector<T>) -> T {
@@ -857,7 +857,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Bivector -> Vector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Vector<T> {
@@ -873,7 +873,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Trivector -> Motor`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Motor<T> {
@@ -905,7 +905,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Quadvector -> Multivector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Multivector<T> {
@@ -948,7 +948,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Pseudoscalar -> Motor`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -975,7 +975,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Rotor -> Vector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Motor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Vector<T> {
@@ -991,7 +991,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Motor -> Multivector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Multivector<T> {
@@ -1054,7 +1054,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -1128,7 +1128,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Motor<T> {
 }
 
 /// Regressive product `Multivector & Vector -> Multivector`.
-impl<T: Scalar> BitAnd<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Vector<T>) -> Multivector<T> {
@@ -1171,7 +1171,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Bivector -> Multivector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Multivector<T> {
@@ -1219,7 +1219,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Trivector -> Multivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Multivector<T> {
@@ -1277,7 +1277,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Quadvector -> Multivector`.
-impl<T: Scalar> BitAnd<Quadvector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Quadvector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Quadvector<T>) -> Multivector<T> {
@@ -1320,7 +1320,7 @@ impl<T: Scalar> BitAnd<Quadvector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1363,7 +1363,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Rotor -> Multivector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Multivector<T> {
@@ -1406,7 +1406,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Motor -> Multivector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Multivector<T> {
@@ -1481,7 +1481,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {

@@ -4,7 +4,7 @@
 
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
-use crate::Scalar;
+use crate::{Coefficient, Scalar};
 
 /// A vector (grade 1): points, dual spheres and dual planes.
 ///
@@ -134,7 +134,7 @@ impl<T: Scalar> Vector<T> {
     }
 }
 
-impl<T: Scalar> Add for Vector<T> {
+impl<T: Coefficient> Add for Vector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -148,7 +148,7 @@ impl<T: Scalar> Add for Vector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Vector<T> {
+impl<T: Coefficient> Sub for Vector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -162,7 +162,7 @@ impl<T: Scalar> Sub for Vector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Vector<T> {
+impl<T: Coefficient> Neg for Vector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -170,7 +170,7 @@ impl<T: Scalar> Neg for Vector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Vector<T> {
+impl<T: Coefficient> Mul<T> for Vector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -577,7 +577,7 @@ impl<T: Scalar> Bivector<T> {
     }
 }
 
-impl<T: Scalar> Add for Bivector<T> {
+impl<T: Coefficient> Add for Bivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -596,7 +596,7 @@ impl<T: Scalar> Add for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Bivector<T> {
+impl<T: Coefficient> Sub for Bivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -615,7 +615,7 @@ impl<T: Scalar> Sub for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Bivector<T> {
+impl<T: Coefficient> Neg for Bivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -634,7 +634,7 @@ impl<T: Scalar> Neg for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Bivector<T> {
+impl<T: Coefficient> Mul<T> for Bivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1052,7 +1052,7 @@ impl<T: Scalar> Trivector<T> {
     }
 }
 
-impl<T: Scalar> Add for Trivector<T> {
+impl<T: Coefficient> Add for Trivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1071,7 +1071,7 @@ impl<T: Scalar> Add for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Trivector<T> {
+impl<T: Coefficient> Sub for Trivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1090,7 +1090,7 @@ impl<T: Scalar> Sub for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Trivector<T> {
+impl<T: Coefficient> Neg for Trivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1109,7 +1109,7 @@ impl<T: Scalar> Neg for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Trivector<T> {
+impl<T: Coefficient> Mul<T> for Trivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1330,7 +1330,7 @@ impl<T: Scalar> Quadvector<T> {
     }
 }
 
-impl<T: Scalar> Add for Quadvector<T> {
+impl<T: Coefficient> Add for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1344,7 +1344,7 @@ impl<T: Scalar> Add for Quadvector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Quadvector<T> {
+impl<T: Coefficient> Sub for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1358,7 +1358,7 @@ impl<T: Scalar> Sub for Quadvector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Quadvector<T> {
+impl<T: Coefficient> Neg for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1372,7 +1372,7 @@ impl<T: Scalar> Neg for Quadvector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Quadvector<T> {
+impl<T: Coefficient> Mul<T> for Quadvector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1543,7 +1543,7 @@ impl<T: Scalar> Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Add for Pseudoscalar<T> {
+impl<T: Coefficient> Add for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1551,7 +1551,7 @@ impl<T: Scalar> Add for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Sub for Pseudoscalar<T> {
+impl<T: Coefficient> Sub for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1559,7 +1559,7 @@ impl<T: Scalar> Sub for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Neg for Pseudoscalar<T> {
+impl<T: Coefficient> Neg for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1567,7 +1567,7 @@ impl<T: Scalar> Neg for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<T> for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1804,7 +1804,7 @@ impl<T: Scalar> Rotor<T> {
     }
 }
 
-impl<T: Scalar> Add for Rotor<T> {
+impl<T: Coefficient> Add for Rotor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1817,7 +1817,7 @@ impl<T: Scalar> Add for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Sub for Rotor<T> {
+impl<T: Coefficient> Sub for Rotor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1830,7 +1830,7 @@ impl<T: Scalar> Sub for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Neg for Rotor<T> {
+impl<T: Coefficient> Neg for Rotor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1838,7 +1838,7 @@ impl<T: Scalar> Neg for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Rotor<T> {
+impl<T: Coefficient> Mul<T> for Rotor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -2522,7 +2522,7 @@ impl<T: Scalar> Motor<T> {
     }
 }
 
-impl<T: Scalar> Add for Motor<T> {
+impl<T: Coefficient> Add for Motor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -2547,7 +2547,7 @@ impl<T: Scalar> Add for Motor<T> {
     }
 }
 
-impl<T: Scalar> Sub for Motor<T> {
+impl<T: Coefficient> Sub for Motor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -2572,7 +2572,7 @@ impl<T: Scalar> Sub for Motor<T> {
     }
 }
 
-impl<T: Scalar> Neg for Motor<T> {
+impl<T: Coefficient> Neg for Motor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -2597,7 +2597,7 @@ impl<T: Scalar> Neg for Motor<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Motor<T> {
+impl<T: Coefficient> Mul<T> for Motor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -4312,7 +4312,7 @@ impl<T: Scalar> Multivector<T> {
     }
 }
 
-impl<T: Scalar> Add for Multivector<T> {
+impl<T: Coefficient> Add for Multivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -4353,7 +4353,7 @@ impl<T: Scalar> Add for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Multivector<T> {
+impl<T: Coefficient> Sub for Multivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -4394,7 +4394,7 @@ impl<T: Scalar> Sub for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Multivector<T> {
+impl<T: Coefficient> Neg for Multivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -4435,7 +4435,7 @@ impl<T: Scalar> Neg for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Multivector<T> {
+impl<T: Coefficient> Mul<T> for Multivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {

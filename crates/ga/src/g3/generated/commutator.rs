@@ -6,12 +6,12 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::g3::{Bivector, Multivector, Rotor, Vector};
 use crate::products::Commutator;
 
 /// Commutator product `Vector × Vector -> Bivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Bivector<T> {
@@ -25,7 +25,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Bivector -> Vector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Vector<T> {
@@ -39,7 +39,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Rotor -> Vector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Vector<T> {
@@ -53,7 +53,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Vector<T> {
 }
 
 /// Commutator product `Vector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -74,7 +74,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Vector<T> {
 }
 
 /// Commutator product `Bivector × Vector -> Vector`.
-impl<T: Scalar> Commutator<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Vector<T> {
@@ -88,7 +88,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Bivector -> Bivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Bivector<T> {
@@ -102,7 +102,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Rotor -> Bivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Bivector<T> {
@@ -116,7 +116,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Bivector<T> {
 }
 
 /// Commutator product `Bivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -137,7 +137,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Bivector<T> {
 }
 
 /// Commutator product `Rotor × Vector -> Vector`.
-impl<T: Scalar> Commutator<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Vector<T> {
@@ -151,7 +151,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Bivector -> Bivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Bivector<T> {
@@ -165,7 +165,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Rotor -> Bivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Bivector<T> {
@@ -179,7 +179,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -200,7 +200,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Multivector × Vector -> Multivector`.
-impl<T: Scalar> Commutator<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Vector<T>) -> Multivector<T> {
@@ -221,7 +221,7 @@ impl<T: Scalar> Commutator<Vector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Bivector -> Multivector`.
-impl<T: Scalar> Commutator<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Bivector<T>) -> Multivector<T> {
@@ -242,7 +242,7 @@ impl<T: Scalar> Commutator<Bivector<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Rotor -> Multivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Multivector<T> {
@@ -263,7 +263,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {

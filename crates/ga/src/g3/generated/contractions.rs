@@ -7,12 +7,12 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 use crate::products::{LeftContraction, RightContraction, ScalarProduct};
 
 /// Left contraction `Vector ⌋ Vector -> scalar`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> T {
@@ -22,7 +22,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Bivector -> Vector`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Vector<T> {
@@ -36,7 +36,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Trivector -> Bivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Bivector<T> {
@@ -46,7 +46,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Rotor -> Vector`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Vector<T> {
@@ -60,7 +60,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Vector<T> {
 }
 
 /// Left contraction `Vector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -81,7 +81,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Vector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Bivector -> scalar`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> T {
@@ -91,7 +91,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Trivector -> Vector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Vector<T> {
@@ -101,7 +101,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Rotor -> scalar`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> T {
@@ -111,7 +111,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Bivector<T> {
 }
 
 /// Left contraction `Bivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -132,7 +132,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Bivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Trivector -> scalar`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> T {
@@ -142,7 +142,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Trivector<T> {
 }
 
 /// Left contraction `Trivector ⌋ Multivector -> scalar`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> T {
@@ -152,7 +152,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Trivector<T> {
 }
 
 /// Left contraction `Rotor ⌋ Vector -> Vector`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -162,7 +162,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Bivector -> Rotor`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Rotor<T> {
@@ -177,7 +177,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Trivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -198,7 +198,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -213,7 +213,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -234,7 +234,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Multivector ⌋ Vector -> Multivector`.
-impl<T: Scalar> LeftContraction<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Vector<T>) -> Multivector<T> {
@@ -255,7 +255,7 @@ impl<T: Scalar> LeftContraction<Vector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Bivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Bivector<T>) -> Multivector<T> {
@@ -276,7 +276,7 @@ impl<T: Scalar> LeftContraction<Bivector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Trivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Trivector<T>) -> Multivector<T> {
@@ -297,7 +297,7 @@ impl<T: Scalar> LeftContraction<Trivector<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Rotor -> Multivector`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -318,7 +318,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -343,7 +343,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Vector ⌊ Vector -> scalar`.
-impl<T: Scalar> RightContraction<Vector<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> T {
@@ -353,7 +353,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Vector<T> {
 }
 
 /// Right contraction `Vector ⌊ Rotor -> Vector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Vector<T> {
@@ -363,7 +363,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Vector<T> {
 }
 
 /// Right contraction `Vector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -384,7 +384,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Vector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Vector -> Vector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -398,7 +398,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Bivector -> scalar`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> T {
@@ -408,7 +408,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Rotor -> Rotor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Bivector<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -423,7 +423,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Bivector<T> {
 }
 
 /// Right contraction `Bivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -444,7 +444,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Bivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Vector -> Bivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Bivector<T> {
@@ -454,7 +454,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Bivector -> Vector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Vector<T> {
@@ -464,7 +464,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Trivector -> scalar`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> T {
@@ -474,7 +474,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -495,7 +495,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Trivector<T> {
 }
 
 /// Right contraction `Trivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -516,7 +516,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Trivector<T> {
 }
 
 /// Right contraction `Rotor ⌊ Vector -> Vector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Vector<T> {
@@ -530,7 +530,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Bivector -> scalar`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> T {
@@ -540,7 +540,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Rotor -> Rotor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -555,7 +555,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -576,7 +576,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Multivector ⌊ Vector -> Multivector`.
-impl<T: Scalar> RightContraction<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Vector<T>) -> Multivector<T> {
@@ -597,7 +597,7 @@ impl<T: Scalar> RightContraction<Vector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Bivector -> Multivector`.
-impl<T: Scalar> RightContraction<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Bivector<T>) -> Multivector<T> {
@@ -618,7 +618,7 @@ impl<T: Scalar> RightContraction<Bivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Trivector -> scalar`.
-impl<T: Scalar> RightContraction<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Trivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Trivector<T>) -> T {
@@ -628,7 +628,7 @@ impl<T: Scalar> RightContraction<Trivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -649,7 +649,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -674,7 +674,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Vector ∗ Vector -> scalar`.
-impl<T: Scalar> ScalarProduct<Vector<T>> for Vector<T> {
+impl<T: Coefficient> ScalarProduct<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Vector<T>) -> T {
@@ -684,7 +684,7 @@ impl<T: Scalar> ScalarProduct<Vector<T>> for Vector<T> {
 }
 
 /// Scalar product `Vector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -694,7 +694,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Vector<T> {
 }
 
 /// Scalar product `Bivector ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -704,7 +704,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Bivector<T> {
 }
 
 /// Scalar product `Bivector ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -714,7 +714,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Bivector<T> {
 }
 
 /// Scalar product `Bivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -724,7 +724,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Bivector<T> {
 }
 
 /// Scalar product `Trivector ∗ Trivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> ScalarProduct<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Trivector<T>) -> T {
@@ -734,7 +734,7 @@ impl<T: Scalar> ScalarProduct<Trivector<T>> for Trivector<T> {
 }
 
 /// Scalar product `Trivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -744,7 +744,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Trivector<T> {
 }
 
 /// Scalar product `Rotor ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -754,7 +754,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -764,7 +764,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -774,7 +774,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
 }
 
 /// Scalar product `Multivector ∗ Vector -> scalar`.
-impl<T: Scalar> ScalarProduct<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Vector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Vector<T>) -> T {
@@ -784,7 +784,7 @@ impl<T: Scalar> ScalarProduct<Vector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Bivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Bivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Bivector<T>) -> T {
@@ -794,7 +794,7 @@ impl<T: Scalar> ScalarProduct<Bivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Trivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Trivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Trivector<T>) -> T {
@@ -804,7 +804,7 @@ impl<T: Scalar> ScalarProduct<Trivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -814,7 +814,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {

@@ -8,11 +8,12 @@
 
 use core::ops::Mul;
 
+use crate::Coefficient;
 use crate::Scalar;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 
 /// Geometric product `Vector * Vector -> Rotor`.
-impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Vector<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Rotor<T> {
@@ -27,7 +28,7 @@ impl<T: Scalar> Mul<Vector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
@@ -48,7 +49,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Trivector -> Bivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Bivector<T> {
@@ -58,7 +59,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -79,7 +80,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Vector<T> {
 }
 
 /// Geometric product `Vector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -100,7 +101,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Vector<T> {
 }
 
 /// Geometric product `Bivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -121,7 +122,7 @@ impl<T: Scalar> Mul<Vector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Bivector -> Rotor`.
-impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Bivector<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Rotor<T> {
@@ -136,7 +137,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Trivector -> Vector`.
-impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Vector<T> {
@@ -146,7 +147,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Rotor -> Rotor`.
-impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Bivector<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Rotor<T> {
@@ -161,7 +162,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Bivector<T> {
 }
 
 /// Geometric product `Bivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -182,7 +183,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Bivector<T> {
 }
 
 /// Geometric product `Trivector * Vector -> Bivector`.
-impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Bivector<T> {
@@ -192,7 +193,7 @@ impl<T: Scalar> Mul<Vector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Bivector -> Vector`.
-impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Vector<T> {
@@ -202,7 +203,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Trivector -> scalar`.
-impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn mul(self, b: Trivector<T>) -> T {
@@ -212,7 +213,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -233,7 +234,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Trivector<T> {
 }
 
 /// Geometric product `Trivector * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -254,7 +255,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Trivector<T> {
 }
 
 /// Geometric product `Rotor * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -275,7 +276,7 @@ impl<T: Scalar> Mul<Vector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Bivector -> Rotor`.
-impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Rotor<T> {
@@ -290,7 +291,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -324,7 +325,7 @@ pub(crate) fn geometric_rotor_rotor<T: Scalar>(a: Rotor<T>, b: Rotor<T>) -> Roto
 }
 
 /// Geometric product `Rotor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -345,7 +346,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Multivector * Vector -> Multivector`.
-impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Vector<T>) -> Multivector<T> {
@@ -366,7 +367,7 @@ impl<T: Scalar> Mul<Vector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Bivector -> Multivector`.
-impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Bivector<T>) -> Multivector<T> {
@@ -387,7 +388,7 @@ impl<T: Scalar> Mul<Bivector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Trivector -> Multivector`.
-impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Trivector<T>) -> Multivector<T> {
@@ -408,7 +409,7 @@ impl<T: Scalar> Mul<Trivector<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {

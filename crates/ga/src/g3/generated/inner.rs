@@ -8,11 +8,11 @@
 
 use core::ops::BitOr;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 
 /// Inner product `Vector | Vector -> scalar`.
-impl<T: Scalar> BitOr<Vector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Vector<T>) -> T {
@@ -22,7 +22,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Bivector -> Vector`.
-impl<T: Scalar> BitOr<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Vector<T> {
@@ -36,7 +36,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Trivector -> Bivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Bivector<T> {
@@ -46,7 +46,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Rotor -> Vector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Vector<T> {
@@ -60,7 +60,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Vector<T> {
 }
 
 /// Inner product `Vector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -81,7 +81,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Vector<T> {
 }
 
 /// Inner product `Bivector | Vector -> Vector`.
-impl<T: Scalar> BitOr<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Vector<T> {
@@ -95,7 +95,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Bivector -> scalar`.
-impl<T: Scalar> BitOr<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> T {
@@ -105,7 +105,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Trivector -> Vector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Vector<T> {
@@ -115,7 +115,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Rotor -> scalar`.
-impl<T: Scalar> BitOr<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> T {
@@ -125,7 +125,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Bivector<T> {
 }
 
 /// Inner product `Bivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -146,7 +146,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Bivector<T> {
 }
 
 /// Inner product `Trivector | Vector -> Bivector`.
-impl<T: Scalar> BitOr<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Bivector<T> {
@@ -156,7 +156,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Bivector -> Vector`.
-impl<T: Scalar> BitOr<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Vector<T> {
@@ -166,7 +166,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Trivector -> scalar`.
-impl<T: Scalar> BitOr<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Trivector<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> T {
@@ -176,7 +176,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Rotor -> Vector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Vector<T> {
@@ -186,7 +186,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Trivector<T> {
 }
 
 /// Inner product `Trivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -207,7 +207,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Trivector<T> {
 }
 
 /// Inner product `Rotor | Vector -> Vector`.
-impl<T: Scalar> BitOr<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Vector<T> {
@@ -221,7 +221,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Bivector -> scalar`.
-impl<T: Scalar> BitOr<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> T {
@@ -231,7 +231,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Trivector -> Vector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Vector<T> {
@@ -241,7 +241,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Rotor -> scalar`.
-impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> T {
@@ -251,7 +251,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -272,7 +272,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Multivector | Vector -> Multivector`.
-impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Vector<T>) -> Multivector<T> {
@@ -293,7 +293,7 @@ impl<T: Scalar> BitOr<Vector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Bivector -> Multivector`.
-impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Bivector<T>) -> Multivector<T> {
@@ -314,7 +314,7 @@ impl<T: Scalar> BitOr<Bivector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Trivector -> Multivector`.
-impl<T: Scalar> BitOr<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Trivector<T>) -> Multivector<T> {
@@ -335,7 +335,7 @@ impl<T: Scalar> BitOr<Trivector<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Rotor -> Multivector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Multivector<T> {
@@ -356,7 +356,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {

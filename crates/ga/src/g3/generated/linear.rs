@@ -4,10 +4,11 @@
 
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
+use crate::Coefficient;
 use crate::Scalar;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 
-impl<T: Scalar> Add for Vector<T> {
+impl<T: Coefficient> Add for Vector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -15,7 +16,7 @@ impl<T: Scalar> Add for Vector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Vector<T> {
+impl<T: Coefficient> Sub for Vector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -23,7 +24,7 @@ impl<T: Scalar> Sub for Vector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Vector<T> {
+impl<T: Coefficient> Neg for Vector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -31,7 +32,7 @@ impl<T: Scalar> Neg for Vector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Vector<T> {
+impl<T: Coefficient> Mul<T> for Vector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -92,7 +93,7 @@ impl Mul<Vector<f64>> for f64 {
     }
 }
 
-impl<T: Scalar> Add for Bivector<T> {
+impl<T: Coefficient> Add for Bivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -100,7 +101,7 @@ impl<T: Scalar> Add for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Bivector<T> {
+impl<T: Coefficient> Sub for Bivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -108,7 +109,7 @@ impl<T: Scalar> Sub for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Bivector<T> {
+impl<T: Coefficient> Neg for Bivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -116,7 +117,7 @@ impl<T: Scalar> Neg for Bivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Bivector<T> {
+impl<T: Coefficient> Mul<T> for Bivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -177,7 +178,7 @@ impl Mul<Bivector<f64>> for f64 {
     }
 }
 
-impl<T: Scalar> Add for Trivector<T> {
+impl<T: Coefficient> Add for Trivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -185,7 +186,7 @@ impl<T: Scalar> Add for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Trivector<T> {
+impl<T: Coefficient> Sub for Trivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -193,7 +194,7 @@ impl<T: Scalar> Sub for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Trivector<T> {
+impl<T: Coefficient> Neg for Trivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -201,7 +202,7 @@ impl<T: Scalar> Neg for Trivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Trivector<T> {
+impl<T: Coefficient> Mul<T> for Trivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -262,7 +263,7 @@ impl Mul<Trivector<f64>> for f64 {
     }
 }
 
-impl<T: Scalar> Add for Rotor<T> {
+impl<T: Coefficient> Add for Rotor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -275,7 +276,7 @@ impl<T: Scalar> Add for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Sub for Rotor<T> {
+impl<T: Coefficient> Sub for Rotor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -288,7 +289,7 @@ impl<T: Scalar> Sub for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Neg for Rotor<T> {
+impl<T: Coefficient> Neg for Rotor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -296,7 +297,7 @@ impl<T: Scalar> Neg for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Rotor<T> {
+impl<T: Coefficient> Mul<T> for Rotor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -357,7 +358,7 @@ impl Mul<Rotor<f64>> for f64 {
     }
 }
 
-impl<T: Scalar> Add for Multivector<T> {
+impl<T: Coefficient> Add for Multivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -376,7 +377,7 @@ impl<T: Scalar> Add for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Multivector<T> {
+impl<T: Coefficient> Sub for Multivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -395,7 +396,7 @@ impl<T: Scalar> Sub for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Multivector<T> {
+impl<T: Coefficient> Neg for Multivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -408,7 +409,7 @@ impl<T: Scalar> Neg for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Multivector<T> {
+impl<T: Coefficient> Mul<T> for Multivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {

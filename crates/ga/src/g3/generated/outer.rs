@@ -8,11 +8,11 @@
 
 use core::ops::BitXor;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 
 /// Outer product `Vector ^ Vector -> Bivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Vector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Bivector<T> {
@@ -26,7 +26,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Bivector -> Trivector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Vector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Trivector<T> {
@@ -36,7 +36,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -57,7 +57,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Vector<T> {
 }
 
 /// Outer product `Vector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -78,7 +78,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Vector<T> {
 }
 
 /// Outer product `Bivector ^ Vector -> Trivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Bivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Trivector<T> {
@@ -88,7 +88,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Rotor -> Bivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Bivector<T> {
@@ -98,7 +98,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Bivector<T> {
 }
 
 /// Outer product `Bivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -119,7 +119,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Bivector<T> {
 }
 
 /// Outer product `Trivector ^ Rotor -> Trivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Trivector<T> {
@@ -129,7 +129,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Trivector<T> {
 }
 
 /// Outer product `Trivector ^ Multivector -> Trivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Trivector<T> {
@@ -139,7 +139,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Trivector<T> {
 }
 
 /// Outer product `Rotor ^ Vector -> Multivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
@@ -160,7 +160,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Bivector -> Bivector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Rotor<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Bivector<T> {
@@ -170,7 +170,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Trivector -> Trivector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Rotor<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Trivector<T> {
@@ -180,7 +180,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Rotor -> Rotor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Rotor<T> {
@@ -195,7 +195,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -216,7 +216,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Multivector ^ Vector -> Multivector`.
-impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Vector<T>) -> Multivector<T> {
@@ -237,7 +237,7 @@ impl<T: Scalar> BitXor<Vector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Bivector -> Multivector`.
-impl<T: Scalar> BitXor<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Bivector<T>) -> Multivector<T> {
@@ -258,7 +258,7 @@ impl<T: Scalar> BitXor<Bivector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Trivector -> Trivector`.
-impl<T: Scalar> BitXor<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Trivector<T>> for Multivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitxor(self, b: Trivector<T>) -> Trivector<T> {
@@ -268,7 +268,7 @@ impl<T: Scalar> BitXor<Trivector<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -289,7 +289,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {

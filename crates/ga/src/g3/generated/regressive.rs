@@ -9,11 +9,11 @@
 
 use core::ops::BitAnd;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::g3::{Bivector, Multivector, Rotor, Trivector, Vector};
 
 /// Regressive product `Vector & Bivector -> scalar`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> T {
@@ -23,7 +23,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Trivector -> Vector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Vector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Vector<T> {
@@ -33,7 +33,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Rotor -> scalar`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Vector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> T {
@@ -43,7 +43,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Vector<T> {
 }
 
 /// Regressive product `Vector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Vector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Vector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -64,7 +64,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Vector<T> {
 }
 
 /// Regressive product `Bivector & Vector -> scalar`.
-impl<T: Scalar> BitAnd<Vector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Bivector<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Vector<T>) -> T {
@@ -74,7 +74,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Bivector -> Vector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Vector<T> {
@@ -88,7 +88,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Trivector -> Bivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Bivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Bivector<T> {
@@ -98,7 +98,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Rotor -> Vector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Bivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Vector<T> {
@@ -112,7 +112,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Bivector<T> {
 }
 
 /// Regressive product `Bivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Bivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -133,7 +133,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Bivector<T> {
 }
 
 /// Regressive product `Trivector & Vector -> Vector`.
-impl<T: Scalar> BitAnd<Vector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Trivector<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Vector<T>) -> Vector<T> {
@@ -143,7 +143,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Bivector -> Bivector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Trivector<T> {
     type Output = Bivector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Bivector<T> {
@@ -153,7 +153,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Trivector -> Trivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Trivector<T> {
     type Output = Trivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Trivector<T> {
@@ -163,7 +163,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Rotor -> Rotor`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Trivector<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Rotor<T> {
@@ -173,7 +173,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Trivector<T> {
 }
 
 /// Regressive product `Trivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Trivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Trivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -194,7 +194,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Trivector<T> {
 }
 
 /// Regressive product `Rotor & Vector -> scalar`.
-impl<T: Scalar> BitAnd<Vector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Vector<T>) -> T {
@@ -204,7 +204,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Bivector -> Vector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Vector<T> {
@@ -218,7 +218,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Trivector -> Rotor`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Rotor<T> {
@@ -228,7 +228,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Rotor -> Vector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Rotor<T> {
     type Output = Vector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Vector<T> {
@@ -242,7 +242,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -263,7 +263,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Multivector & Vector -> Multivector`.
-impl<T: Scalar> BitAnd<Vector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Vector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Vector<T>) -> Multivector<T> {
@@ -284,7 +284,7 @@ impl<T: Scalar> BitAnd<Vector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Bivector -> Multivector`.
-impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Bivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Bivector<T>) -> Multivector<T> {
@@ -305,7 +305,7 @@ impl<T: Scalar> BitAnd<Bivector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Trivector -> Multivector`.
-impl<T: Scalar> BitAnd<Trivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Trivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Trivector<T>) -> Multivector<T> {
@@ -326,7 +326,7 @@ impl<T: Scalar> BitAnd<Trivector<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Rotor -> Multivector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Multivector<T> {
@@ -347,7 +347,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {

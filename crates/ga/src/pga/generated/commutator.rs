@@ -6,12 +6,12 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 use crate::products::Commutator;
 
 /// Commutator product `Plane × Plane -> Line`.
-impl<T: Scalar> Commutator<Plane<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Plane<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Line<T> {
@@ -28,7 +28,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Line -> Plane`.
-impl<T: Scalar> Commutator<Line<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Plane<T> {
@@ -43,7 +43,7 @@ impl<T: Scalar> Commutator<Line<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Point -> Pseudoscalar`.
-impl<T: Scalar> Commutator<Point<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Plane<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Pseudoscalar<T> {
@@ -53,7 +53,7 @@ impl<T: Scalar> Commutator<Point<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -80,7 +80,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Rotor -> Plane`.
-impl<T: Scalar> Commutator<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Plane<T> {
@@ -95,7 +95,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Translator -> Plane`.
-impl<T: Scalar> Commutator<Translator<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Plane<T> {
@@ -110,7 +110,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Pseudoscalar -> Point`.
-impl<T: Scalar> Commutator<Pseudoscalar<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Pseudoscalar<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Pseudoscalar<T>) -> Point<T> {
@@ -120,7 +120,7 @@ impl<T: Scalar> Commutator<Pseudoscalar<T>> for Plane<T> {
 }
 
 /// Commutator product `Plane × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -147,7 +147,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Plane<T> {
 }
 
 /// Commutator product `Line × Plane -> Plane`.
-impl<T: Scalar> Commutator<Plane<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Plane<T> {
@@ -162,7 +162,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Line -> Line`.
-impl<T: Scalar> Commutator<Line<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Line<T> {
@@ -179,7 +179,7 @@ impl<T: Scalar> Commutator<Line<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Point -> Point`.
-impl<T: Scalar> Commutator<Point<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Line<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Point<T> {
@@ -194,7 +194,7 @@ impl<T: Scalar> Commutator<Point<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Motor -> Line`.
-impl<T: Scalar> Commutator<Motor<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Line<T> {
@@ -211,7 +211,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Rotor -> Line`.
-impl<T: Scalar> Commutator<Rotor<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Line<T> {
@@ -228,7 +228,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Translator -> Line`.
-impl<T: Scalar> Commutator<Translator<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Line<T> {
@@ -245,7 +245,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Line<T> {
 }
 
 /// Commutator product `Line × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Line<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -272,7 +272,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Line<T> {
 }
 
 /// Commutator product `Point × Plane -> Pseudoscalar`.
-impl<T: Scalar> Commutator<Plane<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Point<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Pseudoscalar<T> {
@@ -282,7 +282,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Line -> Point`.
-impl<T: Scalar> Commutator<Line<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Point<T> {
@@ -297,7 +297,7 @@ impl<T: Scalar> Commutator<Line<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Point -> Line`.
-impl<T: Scalar> Commutator<Point<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Point<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Line<T> {
@@ -314,7 +314,7 @@ impl<T: Scalar> Commutator<Point<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -341,7 +341,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Rotor -> Point`.
-impl<T: Scalar> Commutator<Rotor<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Point<T> {
@@ -356,7 +356,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Translator -> Point`.
-impl<T: Scalar> Commutator<Translator<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Point<T> {
@@ -366,7 +366,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Pseudoscalar -> Plane`.
-impl<T: Scalar> Commutator<Pseudoscalar<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Pseudoscalar<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Pseudoscalar<T>) -> Plane<T> {
@@ -376,7 +376,7 @@ impl<T: Scalar> Commutator<Pseudoscalar<T>> for Point<T> {
 }
 
 /// Commutator product `Point × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Point<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -403,7 +403,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Point<T> {
 }
 
 /// Commutator product `Motor × Plane -> Multivector`.
-impl<T: Scalar> Commutator<Plane<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Multivector<T> {
@@ -430,7 +430,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Line -> Line`.
-impl<T: Scalar> Commutator<Line<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Motor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Line<T> {
@@ -447,7 +447,7 @@ impl<T: Scalar> Commutator<Line<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Point -> Multivector`.
-impl<T: Scalar> Commutator<Point<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Multivector<T> {
@@ -474,7 +474,7 @@ impl<T: Scalar> Commutator<Point<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Motor -> Line`.
-impl<T: Scalar> Commutator<Motor<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Motor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Line<T> {
@@ -491,7 +491,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Rotor -> Line`.
-impl<T: Scalar> Commutator<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Motor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Line<T> {
@@ -508,7 +508,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Translator -> Line`.
-impl<T: Scalar> Commutator<Translator<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Motor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Line<T> {
@@ -525,7 +525,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Motor<T> {
 }
 
 /// Commutator product `Motor × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -552,7 +552,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Motor<T> {
 }
 
 /// Commutator product `Rotor × Plane -> Plane`.
-impl<T: Scalar> Commutator<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Plane<T> {
@@ -567,7 +567,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Line -> Line`.
-impl<T: Scalar> Commutator<Line<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Rotor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Line<T> {
@@ -584,7 +584,7 @@ impl<T: Scalar> Commutator<Line<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Point -> Point`.
-impl<T: Scalar> Commutator<Point<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Rotor<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Point<T> {
@@ -599,7 +599,7 @@ impl<T: Scalar> Commutator<Point<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Motor -> Line`.
-impl<T: Scalar> Commutator<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Rotor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Line<T> {
@@ -616,7 +616,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Rotor -> Line`.
-impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Rotor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Line<T> {
@@ -633,7 +633,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Translator -> Line`.
-impl<T: Scalar> Commutator<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Rotor<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Line<T> {
@@ -650,7 +650,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Rotor<T> {
 }
 
 /// Commutator product `Rotor × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -677,7 +677,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Rotor<T> {
 }
 
 /// Commutator product `Translator × Plane -> Plane`.
-impl<T: Scalar> Commutator<Plane<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Plane<T> {
@@ -692,7 +692,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Translator<T> {
 }
 
 /// Commutator product `Translator × Line -> Line`.
-impl<T: Scalar> Commutator<Line<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Line<T> {
@@ -709,7 +709,7 @@ impl<T: Scalar> Commutator<Line<T>> for Translator<T> {
 }
 
 /// Commutator product `Translator × Point -> Point`.
-impl<T: Scalar> Commutator<Point<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Point<T> {
@@ -719,7 +719,7 @@ impl<T: Scalar> Commutator<Point<T>> for Translator<T> {
 }
 
 /// Commutator product `Translator × Motor -> Line`.
-impl<T: Scalar> Commutator<Motor<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Line<T> {
@@ -736,7 +736,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Translator<T> {
 }
 
 /// Commutator product `Translator × Rotor -> Line`.
-impl<T: Scalar> Commutator<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Line<T> {
@@ -753,7 +753,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Translator<T> {
 }
 
 /// Commutator product `Translator × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -780,7 +780,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Translator<T> {
 }
 
 /// Commutator product `Pseudoscalar × Plane -> Point`.
-impl<T: Scalar> Commutator<Plane<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Pseudoscalar<T> {
     type Output = Point<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Point<T> {
@@ -790,7 +790,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Pseudoscalar<T> {
 }
 
 /// Commutator product `Pseudoscalar × Point -> Plane`.
-impl<T: Scalar> Commutator<Point<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Pseudoscalar<T> {
     type Output = Plane<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Plane<T> {
@@ -800,7 +800,7 @@ impl<T: Scalar> Commutator<Point<T>> for Pseudoscalar<T> {
 }
 
 /// Commutator product `Pseudoscalar × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {
@@ -827,7 +827,7 @@ impl<T: Scalar> Commutator<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Commutator product `Multivector × Plane -> Multivector`.
-impl<T: Scalar> Commutator<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Plane<T>) -> Multivector<T> {
@@ -854,7 +854,7 @@ impl<T: Scalar> Commutator<Plane<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Line -> Multivector`.
-impl<T: Scalar> Commutator<Line<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Line<T>) -> Multivector<T> {
@@ -881,7 +881,7 @@ impl<T: Scalar> Commutator<Line<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Point -> Multivector`.
-impl<T: Scalar> Commutator<Point<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Point<T>) -> Multivector<T> {
@@ -908,7 +908,7 @@ impl<T: Scalar> Commutator<Point<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Motor -> Multivector`.
-impl<T: Scalar> Commutator<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Motor<T>) -> Multivector<T> {
@@ -935,7 +935,7 @@ impl<T: Scalar> Commutator<Motor<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Rotor -> Multivector`.
-impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Rotor<T>) -> Multivector<T> {
@@ -962,7 +962,7 @@ impl<T: Scalar> Commutator<Rotor<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Translator -> Multivector`.
-impl<T: Scalar> Commutator<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Translator<T>) -> Multivector<T> {
@@ -989,7 +989,7 @@ impl<T: Scalar> Commutator<Translator<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Pseudoscalar -> Multivector`.
-impl<T: Scalar> Commutator<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1016,7 +1016,7 @@ impl<T: Scalar> Commutator<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Commutator product `Multivector × Multivector -> Multivector`.
-impl<T: Scalar> Commutator<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> Commutator<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn commutator(self, b: Multivector<T>) -> Multivector<T> {

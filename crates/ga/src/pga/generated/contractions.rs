@@ -7,12 +7,12 @@
 // products of coefficients, which is what clippy's heuristic flags.
 #![allow(clippy::suspicious_arithmetic_impl)]
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 use crate::products::{LeftContraction, RightContraction, ScalarProduct};
 
 /// Left contraction `Plane ⌋ Plane -> scalar`.
-impl<T: Scalar> LeftContraction<Plane<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Plane<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Plane<T>) -> T {
@@ -22,7 +22,7 @@ impl<T: Scalar> LeftContraction<Plane<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Line -> Plane`.
-impl<T: Scalar> LeftContraction<Line<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> Plane<T> {
@@ -37,7 +37,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Point -> Line`.
-impl<T: Scalar> LeftContraction<Point<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Plane<T> {
     type Output = Line<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Line<T> {
@@ -54,7 +54,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Motor -> Multivector`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -81,7 +81,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Rotor -> Plane`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Plane<T> {
@@ -96,7 +96,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Translator -> Plane`.
-impl<T: Scalar> LeftContraction<Translator<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Translator<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Translator<T>) -> Plane<T> {
@@ -111,7 +111,7 @@ impl<T: Scalar> LeftContraction<Translator<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Pseudoscalar -> Point`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Point<T> {
@@ -121,7 +121,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Plane<T> {
 }
 
 /// Left contraction `Plane ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -148,7 +148,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Plane<T> {
 }
 
 /// Left contraction `Line ⌋ Line -> scalar`.
-impl<T: Scalar> LeftContraction<Line<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> T {
@@ -158,7 +158,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Line<T> {
 }
 
 /// Left contraction `Line ⌋ Point -> Plane`.
-impl<T: Scalar> LeftContraction<Point<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Plane<T> {
@@ -173,7 +173,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Line<T> {
 }
 
 /// Left contraction `Line ⌋ Motor -> Translator`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Line<T> {
     type Output = Translator<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Translator<T> {
@@ -188,7 +188,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Line<T> {
 }
 
 /// Left contraction `Line ⌋ Rotor -> scalar`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> T {
@@ -198,7 +198,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Line<T> {
 }
 
 /// Left contraction `Line ⌋ Pseudoscalar -> Line`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Line<T> {
@@ -215,7 +215,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Line<T> {
 }
 
 /// Left contraction `Line ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Line<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -242,7 +242,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Line<T> {
 }
 
 /// Left contraction `Point ⌋ Point -> scalar`.
-impl<T: Scalar> LeftContraction<Point<T>> for Point<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> T {
@@ -252,7 +252,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Point<T> {
 }
 
 /// Left contraction `Point ⌋ Motor -> Plane`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Point<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Plane<T> {
@@ -262,7 +262,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Point<T> {
 }
 
 /// Left contraction `Point ⌋ Pseudoscalar -> Plane`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Point<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Plane<T> {
@@ -272,7 +272,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Point<T> {
 }
 
 /// Left contraction `Point ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Point<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -299,7 +299,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Point<T> {
 }
 
 /// Left contraction `Motor ⌋ Plane -> Plane`.
-impl<T: Scalar> LeftContraction<Plane<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Plane<T>> for Motor<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -309,7 +309,7 @@ impl<T: Scalar> LeftContraction<Plane<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Line -> Motor`.
-impl<T: Scalar> LeftContraction<Line<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> Motor<T> {
@@ -328,7 +328,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Point -> Multivector`.
-impl<T: Scalar> LeftContraction<Point<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Multivector<T> {
@@ -355,7 +355,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -374,7 +374,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Motor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -389,7 +389,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Translator -> Translator`.
-impl<T: Scalar> LeftContraction<Translator<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Translator<T>> for Motor<T> {
     type Output = Translator<T>;
     #[inline]
     fn left_contraction(self, b: Translator<T>) -> Translator<T> {
@@ -399,7 +399,7 @@ impl<T: Scalar> LeftContraction<Translator<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Pseudoscalar -> Motor`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -418,7 +418,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Left contraction `Motor ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -445,7 +445,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Motor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Plane -> Plane`.
-impl<T: Scalar> LeftContraction<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Plane<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -455,7 +455,7 @@ impl<T: Scalar> LeftContraction<Plane<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Line -> Motor`.
-impl<T: Scalar> LeftContraction<Line<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> Motor<T> {
@@ -474,7 +474,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Point -> Multivector`.
-impl<T: Scalar> LeftContraction<Point<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Multivector<T> {
@@ -501,7 +501,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -520,7 +520,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -535,7 +535,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Translator -> Translator`.
-impl<T: Scalar> LeftContraction<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Translator<T>> for Rotor<T> {
     type Output = Translator<T>;
     #[inline]
     fn left_contraction(self, b: Translator<T>) -> Translator<T> {
@@ -545,7 +545,7 @@ impl<T: Scalar> LeftContraction<Translator<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Pseudoscalar -> Motor`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -564,7 +564,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Left contraction `Rotor ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -591,7 +591,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Left contraction `Translator ⌋ Plane -> Plane`.
-impl<T: Scalar> LeftContraction<Plane<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Plane<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
     fn left_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -601,7 +601,7 @@ impl<T: Scalar> LeftContraction<Plane<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Line -> Line`.
-impl<T: Scalar> LeftContraction<Line<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> Line<T> {
@@ -618,7 +618,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Point -> Point`.
-impl<T: Scalar> LeftContraction<Point<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Point<T> {
@@ -628,7 +628,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Motor -> Motor`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -647,7 +647,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Rotor -> Rotor`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Translator<T> {
     type Output = Rotor<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -657,7 +657,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Translator -> Translator`.
-impl<T: Scalar> LeftContraction<Translator<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn left_contraction(self, b: Translator<T>) -> Translator<T> {
@@ -667,7 +667,7 @@ impl<T: Scalar> LeftContraction<Translator<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Translator<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -677,7 +677,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Translator<T> {
 }
 
 /// Left contraction `Translator ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -704,7 +704,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Translator<T> {
 }
 
 /// Left contraction `Multivector ⌋ Plane -> Multivector`.
-impl<T: Scalar> LeftContraction<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Plane<T>) -> Multivector<T> {
@@ -731,7 +731,7 @@ impl<T: Scalar> LeftContraction<Plane<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Line -> Multivector`.
-impl<T: Scalar> LeftContraction<Line<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Line<T>) -> Multivector<T> {
@@ -758,7 +758,7 @@ impl<T: Scalar> LeftContraction<Line<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Point -> Multivector`.
-impl<T: Scalar> LeftContraction<Point<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Point<T>) -> Multivector<T> {
@@ -785,7 +785,7 @@ impl<T: Scalar> LeftContraction<Point<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Motor -> Multivector`.
-impl<T: Scalar> LeftContraction<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -812,7 +812,7 @@ impl<T: Scalar> LeftContraction<Motor<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Rotor -> Multivector`.
-impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -839,7 +839,7 @@ impl<T: Scalar> LeftContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Translator -> Multivector`.
-impl<T: Scalar> LeftContraction<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Translator<T>) -> Multivector<T> {
@@ -866,7 +866,7 @@ impl<T: Scalar> LeftContraction<Translator<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Pseudoscalar -> Multivector`.
-impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -893,7 +893,7 @@ impl<T: Scalar> LeftContraction<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Left contraction `Multivector ⌋ Multivector -> Multivector`.
-impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> LeftContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn left_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -928,7 +928,7 @@ impl<T: Scalar> LeftContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Right contraction `Plane ⌊ Plane -> scalar`.
-impl<T: Scalar> RightContraction<Plane<T>> for Plane<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> T {
@@ -938,7 +938,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Plane<T> {
 }
 
 /// Right contraction `Plane ⌊ Motor -> Plane`.
-impl<T: Scalar> RightContraction<Motor<T>> for Plane<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Plane<T> {
@@ -948,7 +948,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Plane<T> {
 }
 
 /// Right contraction `Plane ⌊ Rotor -> Plane`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Plane<T> {
@@ -958,7 +958,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Plane<T> {
 }
 
 /// Right contraction `Plane ⌊ Translator -> Plane`.
-impl<T: Scalar> RightContraction<Translator<T>> for Plane<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Plane<T> {
@@ -968,7 +968,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Plane<T> {
 }
 
 /// Right contraction `Plane ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -995,7 +995,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Plane<T> {
 }
 
 /// Right contraction `Line ⌊ Plane -> Plane`.
-impl<T: Scalar> RightContraction<Plane<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -1010,7 +1010,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Line<T> {
 }
 
 /// Right contraction `Line ⌊ Line -> scalar`.
-impl<T: Scalar> RightContraction<Line<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> T {
@@ -1020,7 +1020,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Line<T> {
 }
 
 /// Right contraction `Line ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -1039,7 +1039,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Line<T> {
 }
 
 /// Right contraction `Line ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -1058,7 +1058,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Line<T> {
 }
 
 /// Right contraction `Line ⌊ Translator -> Line`.
-impl<T: Scalar> RightContraction<Translator<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Line<T> {
@@ -1075,7 +1075,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Line<T> {
 }
 
 /// Right contraction `Line ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Line<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1102,7 +1102,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Line<T> {
 }
 
 /// Right contraction `Point ⌊ Plane -> Line`.
-impl<T: Scalar> RightContraction<Plane<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Point<T> {
     type Output = Line<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Line<T> {
@@ -1119,7 +1119,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Line -> Plane`.
-impl<T: Scalar> RightContraction<Line<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> Plane<T> {
@@ -1134,7 +1134,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Point -> scalar`.
-impl<T: Scalar> RightContraction<Point<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Point<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Point<T>) -> T {
@@ -1144,7 +1144,7 @@ impl<T: Scalar> RightContraction<Point<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Motor -> Multivector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -1171,7 +1171,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -1198,7 +1198,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Translator -> Point`.
-impl<T: Scalar> RightContraction<Translator<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Point<T> {
@@ -1208,7 +1208,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Point<T> {
 }
 
 /// Right contraction `Point ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Point<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1235,7 +1235,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Point<T> {
 }
 
 /// Right contraction `Motor ⌊ Plane -> Multivector`.
-impl<T: Scalar> RightContraction<Plane<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Multivector<T> {
@@ -1262,7 +1262,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Line -> Translator`.
-impl<T: Scalar> RightContraction<Line<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Motor<T> {
     type Output = Translator<T>;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> Translator<T> {
@@ -1277,7 +1277,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Point -> Plane`.
-impl<T: Scalar> RightContraction<Point<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Point<T>> for Motor<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Point<T>) -> Plane<T> {
@@ -1287,7 +1287,7 @@ impl<T: Scalar> RightContraction<Point<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -1306,7 +1306,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -1325,7 +1325,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Translator -> Motor`.
-impl<T: Scalar> RightContraction<Translator<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Motor<T> {
@@ -1344,7 +1344,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Motor<T> {
 }
 
 /// Right contraction `Motor ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1371,7 +1371,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Motor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Plane -> Plane`.
-impl<T: Scalar> RightContraction<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -1386,7 +1386,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Line -> scalar`.
-impl<T: Scalar> RightContraction<Line<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> T {
@@ -1396,7 +1396,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Motor -> Rotor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Rotor<T> {
@@ -1411,7 +1411,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Rotor -> Rotor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Rotor<T> {
@@ -1426,7 +1426,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Translator -> Rotor`.
-impl<T: Scalar> RightContraction<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Rotor<T> {
@@ -1436,7 +1436,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Rotor<T> {
 }
 
 /// Right contraction `Rotor ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1463,7 +1463,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Rotor<T> {
 }
 
 /// Right contraction `Translator ⌊ Plane -> Plane`.
-impl<T: Scalar> RightContraction<Plane<T>> for Translator<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Plane<T> {
@@ -1478,7 +1478,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Translator<T> {
 }
 
 /// Right contraction `Translator ⌊ Motor -> Translator`.
-impl<T: Scalar> RightContraction<Motor<T>> for Translator<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Translator<T> {
@@ -1488,7 +1488,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Translator<T> {
 }
 
 /// Right contraction `Translator ⌊ Rotor -> Translator`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Translator<T> {
@@ -1498,7 +1498,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Translator<T> {
 }
 
 /// Right contraction `Translator ⌊ Translator -> Translator`.
-impl<T: Scalar> RightContraction<Translator<T>> for Translator<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Translator<T> {
@@ -1508,7 +1508,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Translator<T> {
 }
 
 /// Right contraction `Translator ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1535,7 +1535,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Translator<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Plane -> Point`.
-impl<T: Scalar> RightContraction<Plane<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Pseudoscalar<T> {
     type Output = Point<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Point<T> {
@@ -1545,7 +1545,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Line -> Line`.
-impl<T: Scalar> RightContraction<Line<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Pseudoscalar<T> {
     type Output = Line<T>;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> Line<T> {
@@ -1562,7 +1562,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Point -> Plane`.
-impl<T: Scalar> RightContraction<Point<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Point<T>> for Pseudoscalar<T> {
     type Output = Plane<T>;
     #[inline]
     fn right_contraction(self, b: Point<T>) -> Plane<T> {
@@ -1572,7 +1572,7 @@ impl<T: Scalar> RightContraction<Point<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Motor -> Motor`.
-impl<T: Scalar> RightContraction<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Motor<T> {
@@ -1591,7 +1591,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Rotor -> Motor`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Motor<T> {
@@ -1610,7 +1610,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Translator -> Pseudoscalar`.
-impl<T: Scalar> RightContraction<Translator<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Pseudoscalar<T> {
@@ -1620,7 +1620,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Pseudoscalar ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1647,7 +1647,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Right contraction `Multivector ⌊ Plane -> Multivector`.
-impl<T: Scalar> RightContraction<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Plane<T>) -> Multivector<T> {
@@ -1674,7 +1674,7 @@ impl<T: Scalar> RightContraction<Plane<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Line -> Multivector`.
-impl<T: Scalar> RightContraction<Line<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Line<T>) -> Multivector<T> {
@@ -1701,7 +1701,7 @@ impl<T: Scalar> RightContraction<Line<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Point -> Multivector`.
-impl<T: Scalar> RightContraction<Point<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Point<T>) -> Multivector<T> {
@@ -1728,7 +1728,7 @@ impl<T: Scalar> RightContraction<Point<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Motor -> Multivector`.
-impl<T: Scalar> RightContraction<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Motor<T>) -> Multivector<T> {
@@ -1755,7 +1755,7 @@ impl<T: Scalar> RightContraction<Motor<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Rotor -> Multivector`.
-impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Rotor<T>) -> Multivector<T> {
@@ -1782,7 +1782,7 @@ impl<T: Scalar> RightContraction<Rotor<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Translator -> Multivector`.
-impl<T: Scalar> RightContraction<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Translator<T>) -> Multivector<T> {
@@ -1809,7 +1809,7 @@ impl<T: Scalar> RightContraction<Translator<T>> for Multivector<T> {
 }
 
 /// Right contraction `Multivector ⌊ Multivector -> Multivector`.
-impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> RightContraction<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn right_contraction(self, b: Multivector<T>) -> Multivector<T> {
@@ -1847,7 +1847,7 @@ impl<T: Scalar> RightContraction<Multivector<T>> for Multivector<T> {
 }
 
 /// Scalar product `Plane ∗ Plane -> scalar`.
-impl<T: Scalar> ScalarProduct<Plane<T>> for Plane<T> {
+impl<T: Coefficient> ScalarProduct<Plane<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Plane<T>) -> T {
@@ -1857,7 +1857,7 @@ impl<T: Scalar> ScalarProduct<Plane<T>> for Plane<T> {
 }
 
 /// Scalar product `Plane ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -1867,7 +1867,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Plane<T> {
 }
 
 /// Scalar product `Line ∗ Line -> scalar`.
-impl<T: Scalar> ScalarProduct<Line<T>> for Line<T> {
+impl<T: Coefficient> ScalarProduct<Line<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Line<T>) -> T {
@@ -1877,7 +1877,7 @@ impl<T: Scalar> ScalarProduct<Line<T>> for Line<T> {
 }
 
 /// Scalar product `Line ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Line<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -1887,7 +1887,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Line<T> {
 }
 
 /// Scalar product `Line ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Line<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -1897,7 +1897,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Line<T> {
 }
 
 /// Scalar product `Line ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Line<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -1907,7 +1907,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Line<T> {
 }
 
 /// Scalar product `Point ∗ Point -> scalar`.
-impl<T: Scalar> ScalarProduct<Point<T>> for Point<T> {
+impl<T: Coefficient> ScalarProduct<Point<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Point<T>) -> T {
@@ -1917,7 +1917,7 @@ impl<T: Scalar> ScalarProduct<Point<T>> for Point<T> {
 }
 
 /// Scalar product `Point ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Point<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -1927,7 +1927,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Point<T> {
 }
 
 /// Scalar product `Motor ∗ Line -> scalar`.
-impl<T: Scalar> ScalarProduct<Line<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Line<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Line<T>) -> T {
@@ -1937,7 +1937,7 @@ impl<T: Scalar> ScalarProduct<Line<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -1947,7 +1947,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -1957,7 +1957,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Translator -> scalar`.
-impl<T: Scalar> ScalarProduct<Translator<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Translator<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Translator<T>) -> T {
@@ -1967,7 +1967,7 @@ impl<T: Scalar> ScalarProduct<Translator<T>> for Motor<T> {
 }
 
 /// Scalar product `Motor ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Motor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -1977,7 +1977,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Motor<T> {
 }
 
 /// Scalar product `Rotor ∗ Line -> scalar`.
-impl<T: Scalar> ScalarProduct<Line<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Line<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Line<T>) -> T {
@@ -1987,7 +1987,7 @@ impl<T: Scalar> ScalarProduct<Line<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -1997,7 +1997,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -2007,7 +2007,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Translator -> scalar`.
-impl<T: Scalar> ScalarProduct<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Translator<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Translator<T>) -> T {
@@ -2017,7 +2017,7 @@ impl<T: Scalar> ScalarProduct<Translator<T>> for Rotor<T> {
 }
 
 /// Scalar product `Rotor ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -2027,7 +2027,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Rotor<T> {
 }
 
 /// Scalar product `Translator ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Translator<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -2037,7 +2037,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Translator<T> {
 }
 
 /// Scalar product `Translator ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -2047,7 +2047,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Translator<T> {
 }
 
 /// Scalar product `Translator ∗ Translator -> scalar`.
-impl<T: Scalar> ScalarProduct<Translator<T>> for Translator<T> {
+impl<T: Coefficient> ScalarProduct<Translator<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Translator<T>) -> T {
@@ -2057,7 +2057,7 @@ impl<T: Scalar> ScalarProduct<Translator<T>> for Translator<T> {
 }
 
 /// Scalar product `Translator ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {
@@ -2067,7 +2067,7 @@ impl<T: Scalar> ScalarProduct<Multivector<T>> for Translator<T> {
 }
 
 /// Scalar product `Multivector ∗ Plane -> scalar`.
-impl<T: Scalar> ScalarProduct<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Plane<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Plane<T>) -> T {
@@ -2077,7 +2077,7 @@ impl<T: Scalar> ScalarProduct<Plane<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Line -> scalar`.
-impl<T: Scalar> ScalarProduct<Line<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Line<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Line<T>) -> T {
@@ -2087,7 +2087,7 @@ impl<T: Scalar> ScalarProduct<Line<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Point -> scalar`.
-impl<T: Scalar> ScalarProduct<Point<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Point<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Point<T>) -> T {
@@ -2097,7 +2097,7 @@ impl<T: Scalar> ScalarProduct<Point<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Motor -> scalar`.
-impl<T: Scalar> ScalarProduct<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Motor<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Motor<T>) -> T {
@@ -2107,7 +2107,7 @@ impl<T: Scalar> ScalarProduct<Motor<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Rotor -> scalar`.
-impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Rotor<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Rotor<T>) -> T {
@@ -2117,7 +2117,7 @@ impl<T: Scalar> ScalarProduct<Rotor<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Translator -> scalar`.
-impl<T: Scalar> ScalarProduct<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Translator<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Translator<T>) -> T {
@@ -2127,7 +2127,7 @@ impl<T: Scalar> ScalarProduct<Translator<T>> for Multivector<T> {
 }
 
 /// Scalar product `Multivector ∗ Multivector -> scalar`.
-impl<T: Scalar> ScalarProduct<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> ScalarProduct<Multivector<T>> for Multivector<T> {
     type Output = T;
     #[inline]
     fn scalar_product(self, b: Multivector<T>) -> T {

@@ -8,11 +8,12 @@
 
 use core::ops::Mul;
 
+use crate::Coefficient;
 use crate::Scalar;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
 /// Geometric product `Plane * Plane -> Motor`.
-impl<T: Scalar> Mul<Plane<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Plane<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Motor<T> {
@@ -31,7 +32,7 @@ impl<T: Scalar> Mul<Plane<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Line -> Multivector`.
-impl<T: Scalar> Mul<Line<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Line<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Multivector<T> {
@@ -58,7 +59,7 @@ impl<T: Scalar> Mul<Line<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Point -> Motor`.
-impl<T: Scalar> Mul<Point<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Point<T>> for Plane<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Motor<T> {
@@ -77,7 +78,7 @@ impl<T: Scalar> Mul<Point<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -104,7 +105,7 @@ impl<T: Scalar> Mul<Motor<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -131,7 +132,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Translator -> Multivector`.
-impl<T: Scalar> Mul<Translator<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Multivector<T> {
@@ -158,7 +159,7 @@ impl<T: Scalar> Mul<Translator<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Pseudoscalar -> Point`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Point<T> {
@@ -168,7 +169,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Plane<T> {
 }
 
 /// Geometric product `Plane * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -195,7 +196,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Plane<T> {
 }
 
 /// Geometric product `Line * Plane -> Multivector`.
-impl<T: Scalar> Mul<Plane<T>> for Line<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Multivector<T> {
@@ -222,7 +223,7 @@ impl<T: Scalar> Mul<Plane<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Line -> Motor`.
-impl<T: Scalar> Mul<Line<T>> for Line<T> {
+impl<T: Coefficient> Mul<Line<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Motor<T> {
@@ -246,7 +247,7 @@ impl<T: Scalar> Mul<Line<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Point -> Multivector`.
-impl<T: Scalar> Mul<Point<T>> for Line<T> {
+impl<T: Coefficient> Mul<Point<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Multivector<T> {
@@ -273,7 +274,7 @@ impl<T: Scalar> Mul<Point<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Line<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -301,7 +302,7 @@ impl<T: Scalar> Mul<Motor<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Line<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -320,7 +321,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Translator -> Motor`.
-impl<T: Scalar> Mul<Translator<T>> for Line<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Motor<T> {
@@ -339,7 +340,7 @@ impl<T: Scalar> Mul<Translator<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Pseudoscalar -> Line`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Line<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Line<T> {
@@ -356,7 +357,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Line<T> {
 }
 
 /// Geometric product `Line * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Line<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -401,7 +402,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Line<T> {
 }
 
 /// Geometric product `Point * Plane -> Motor`.
-impl<T: Scalar> Mul<Plane<T>> for Point<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Point<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Motor<T> {
@@ -420,7 +421,7 @@ impl<T: Scalar> Mul<Plane<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Line -> Multivector`.
-impl<T: Scalar> Mul<Line<T>> for Point<T> {
+impl<T: Coefficient> Mul<Line<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Multivector<T> {
@@ -447,7 +448,7 @@ impl<T: Scalar> Mul<Line<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Point -> Translator`.
-impl<T: Scalar> Mul<Point<T>> for Point<T> {
+impl<T: Coefficient> Mul<Point<T>> for Point<T> {
     type Output = Translator<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Translator<T> {
@@ -462,7 +463,7 @@ impl<T: Scalar> Mul<Point<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Point<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -489,7 +490,7 @@ impl<T: Scalar> Mul<Motor<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Point<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -516,7 +517,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Translator -> Point`.
-impl<T: Scalar> Mul<Translator<T>> for Point<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Point<T> {
@@ -531,7 +532,7 @@ impl<T: Scalar> Mul<Translator<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Pseudoscalar -> Plane`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Point<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Plane<T> {
@@ -541,7 +542,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Point<T> {
 }
 
 /// Geometric product `Point * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Point<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -568,7 +569,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Point<T> {
 }
 
 /// Geometric product `Motor * Plane -> Multivector`.
-impl<T: Scalar> Mul<Plane<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Multivector<T> {
@@ -595,7 +596,7 @@ impl<T: Scalar> Mul<Plane<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Line -> Motor`.
-impl<T: Scalar> Mul<Line<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Line<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Motor<T> {
@@ -624,7 +625,7 @@ impl<T: Scalar> Mul<Line<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Point -> Multivector`.
-impl<T: Scalar> Mul<Point<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Point<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Multivector<T> {
@@ -686,7 +687,7 @@ pub(crate) fn geometric_motor_motor<T: Scalar>(a: Motor<T>, b: Motor<T>) -> Moto
 }
 
 /// Geometric product `Motor * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -705,7 +706,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Translator -> Motor`.
-impl<T: Scalar> Mul<Translator<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Motor<T> {
@@ -724,7 +725,7 @@ impl<T: Scalar> Mul<Translator<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Pseudoscalar -> Motor`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -743,7 +744,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Geometric product `Motor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -807,7 +808,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Motor<T> {
 }
 
 /// Geometric product `Rotor * Plane -> Multivector`.
-impl<T: Scalar> Mul<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Multivector<T> {
@@ -834,7 +835,7 @@ impl<T: Scalar> Mul<Plane<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Line -> Motor`.
-impl<T: Scalar> Mul<Line<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Line<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Motor<T> {
@@ -853,7 +854,7 @@ impl<T: Scalar> Mul<Line<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Point -> Multivector`.
-impl<T: Scalar> Mul<Point<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Point<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Multivector<T> {
@@ -880,7 +881,7 @@ impl<T: Scalar> Mul<Point<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -899,7 +900,7 @@ impl<T: Scalar> Mul<Motor<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Rotor -> Rotor`.
-impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Rotor<T> {
@@ -914,7 +915,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Translator -> Motor`.
-impl<T: Scalar> Mul<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Motor<T> {
@@ -933,7 +934,7 @@ impl<T: Scalar> Mul<Translator<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Pseudoscalar -> Motor`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -952,7 +953,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Geometric product `Rotor * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -979,7 +980,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Rotor<T> {
 }
 
 /// Geometric product `Translator * Plane -> Multivector`.
-impl<T: Scalar> Mul<Plane<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Multivector<T> {
@@ -1006,7 +1007,7 @@ impl<T: Scalar> Mul<Plane<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Line -> Motor`.
-impl<T: Scalar> Mul<Line<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Line<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Motor<T> {
@@ -1025,7 +1026,7 @@ impl<T: Scalar> Mul<Line<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Point -> Point`.
-impl<T: Scalar> Mul<Point<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Point<T> {
@@ -1040,7 +1041,7 @@ impl<T: Scalar> Mul<Point<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -1059,7 +1060,7 @@ impl<T: Scalar> Mul<Motor<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -1078,7 +1079,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Translator -> Translator`.
-impl<T: Scalar> Mul<Translator<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Translator<T> {
@@ -1093,7 +1094,7 @@ impl<T: Scalar> Mul<Translator<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Translator<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -1103,7 +1104,7 @@ impl<T: Scalar> Mul<Pseudoscalar<T>> for Translator<T> {
 }
 
 /// Geometric product `Translator * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -1130,7 +1131,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Translator<T> {
 }
 
 /// Geometric product `Pseudoscalar * Plane -> Point`.
-impl<T: Scalar> Mul<Plane<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Pseudoscalar<T> {
     type Output = Point<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Point<T> {
@@ -1140,7 +1141,7 @@ impl<T: Scalar> Mul<Plane<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Line -> Line`.
-impl<T: Scalar> Mul<Line<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Line<T>> for Pseudoscalar<T> {
     type Output = Line<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Line<T> {
@@ -1157,7 +1158,7 @@ impl<T: Scalar> Mul<Line<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Point -> Plane`.
-impl<T: Scalar> Mul<Point<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Point<T>> for Pseudoscalar<T> {
     type Output = Plane<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Plane<T> {
@@ -1167,7 +1168,7 @@ impl<T: Scalar> Mul<Point<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Motor -> Motor`.
-impl<T: Scalar> Mul<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Motor<T> {
@@ -1186,7 +1187,7 @@ impl<T: Scalar> Mul<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Rotor -> Motor`.
-impl<T: Scalar> Mul<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Motor<T> {
@@ -1205,7 +1206,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Translator -> Pseudoscalar`.
-impl<T: Scalar> Mul<Translator<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Pseudoscalar<T> {
@@ -1215,7 +1216,7 @@ impl<T: Scalar> Mul<Translator<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Pseudoscalar * Multivector -> Multivector`.
-impl<T: Scalar> Mul<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Multivector<T>) -> Multivector<T> {
@@ -1242,7 +1243,7 @@ impl<T: Scalar> Mul<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Geometric product `Multivector * Plane -> Multivector`.
-impl<T: Scalar> Mul<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Plane<T>) -> Multivector<T> {
@@ -1269,7 +1270,7 @@ impl<T: Scalar> Mul<Plane<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Line -> Multivector`.
-impl<T: Scalar> Mul<Line<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Line<T>) -> Multivector<T> {
@@ -1312,7 +1313,7 @@ impl<T: Scalar> Mul<Line<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Point -> Multivector`.
-impl<T: Scalar> Mul<Point<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Point<T>) -> Multivector<T> {
@@ -1339,7 +1340,7 @@ impl<T: Scalar> Mul<Point<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Motor -> Multivector`.
-impl<T: Scalar> Mul<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Motor<T>) -> Multivector<T> {
@@ -1399,7 +1400,7 @@ impl<T: Scalar> Mul<Motor<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Rotor -> Multivector`.
-impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Rotor<T>) -> Multivector<T> {
@@ -1426,7 +1427,7 @@ impl<T: Scalar> Mul<Rotor<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Translator -> Multivector`.
-impl<T: Scalar> Mul<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Translator<T>) -> Multivector<T> {
@@ -1453,7 +1454,7 @@ impl<T: Scalar> Mul<Translator<T>> for Multivector<T> {
 }
 
 /// Geometric product `Multivector * Pseudoscalar -> Multivector`.
-impl<T: Scalar> Mul<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> Mul<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn mul(self, b: Pseudoscalar<T>) -> Multivector<T> {

@@ -8,11 +8,11 @@
 
 use core::ops::BitOr;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
 /// Inner product `Plane | Plane -> scalar`.
-impl<T: Scalar> BitOr<Plane<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Plane<T>) -> T {
@@ -22,7 +22,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Line -> Plane`.
-impl<T: Scalar> BitOr<Line<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Plane<T> {
@@ -37,7 +37,7 @@ impl<T: Scalar> BitOr<Line<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Point -> Line`.
-impl<T: Scalar> BitOr<Point<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Plane<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Line<T> {
@@ -54,7 +54,7 @@ impl<T: Scalar> BitOr<Point<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Motor -> Multivector`.
-impl<T: Scalar> BitOr<Motor<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Multivector<T> {
@@ -81,7 +81,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Rotor -> Plane`.
-impl<T: Scalar> BitOr<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Plane<T> {
@@ -96,7 +96,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Translator -> Plane`.
-impl<T: Scalar> BitOr<Translator<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Plane<T> {
@@ -111,7 +111,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Pseudoscalar -> Point`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Point<T> {
@@ -121,7 +121,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Plane<T> {
 }
 
 /// Inner product `Plane | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -148,7 +148,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Plane<T> {
 }
 
 /// Inner product `Line | Plane -> Plane`.
-impl<T: Scalar> BitOr<Plane<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Plane<T> {
@@ -163,7 +163,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Line<T> {
 }
 
 /// Inner product `Line | Line -> scalar`.
-impl<T: Scalar> BitOr<Line<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Line<T>) -> T {
@@ -173,7 +173,7 @@ impl<T: Scalar> BitOr<Line<T>> for Line<T> {
 }
 
 /// Inner product `Line | Point -> Plane`.
-impl<T: Scalar> BitOr<Point<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Plane<T> {
@@ -188,7 +188,7 @@ impl<T: Scalar> BitOr<Point<T>> for Line<T> {
 }
 
 /// Inner product `Line | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -207,7 +207,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Line<T> {
 }
 
 /// Inner product `Line | Rotor -> Motor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Motor<T> {
@@ -226,7 +226,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Line<T> {
 }
 
 /// Inner product `Line | Translator -> Line`.
-impl<T: Scalar> BitOr<Translator<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Line<T> {
@@ -243,7 +243,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Line<T> {
 }
 
 /// Inner product `Line | Pseudoscalar -> Line`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Line<T> {
@@ -260,7 +260,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Line<T> {
 }
 
 /// Inner product `Line | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Line<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -292,7 +292,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Line<T> {
 }
 
 /// Inner product `Point | Plane -> Line`.
-impl<T: Scalar> BitOr<Plane<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Point<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Line<T> {
@@ -309,7 +309,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Point<T> {
 }
 
 /// Inner product `Point | Line -> Plane`.
-impl<T: Scalar> BitOr<Line<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Plane<T> {
@@ -324,7 +324,7 @@ impl<T: Scalar> BitOr<Line<T>> for Point<T> {
 }
 
 /// Inner product `Point | Point -> scalar`.
-impl<T: Scalar> BitOr<Point<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn bitor(self, b: Point<T>) -> T {
@@ -334,7 +334,7 @@ impl<T: Scalar> BitOr<Point<T>> for Point<T> {
 }
 
 /// Inner product `Point | Motor -> Multivector`.
-impl<T: Scalar> BitOr<Motor<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Multivector<T> {
@@ -361,7 +361,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Point<T> {
 }
 
 /// Inner product `Point | Rotor -> Multivector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Multivector<T> {
@@ -388,7 +388,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Point<T> {
 }
 
 /// Inner product `Point | Translator -> Point`.
-impl<T: Scalar> BitOr<Translator<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Point<T> {
@@ -398,7 +398,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Point<T> {
 }
 
 /// Inner product `Point | Pseudoscalar -> Plane`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Plane<T> {
@@ -408,7 +408,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Point<T> {
 }
 
 /// Inner product `Point | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Point<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -435,7 +435,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Point<T> {
 }
 
 /// Inner product `Motor | Plane -> Multivector`.
-impl<T: Scalar> BitOr<Plane<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Multivector<T> {
@@ -462,7 +462,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Line -> Motor`.
-impl<T: Scalar> BitOr<Line<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Motor<T> {
@@ -481,7 +481,7 @@ impl<T: Scalar> BitOr<Line<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Point -> Multivector`.
-impl<T: Scalar> BitOr<Point<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Multivector<T> {
@@ -508,7 +508,7 @@ impl<T: Scalar> BitOr<Point<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -527,7 +527,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Rotor -> Motor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Motor<T> {
@@ -546,7 +546,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Translator -> Motor`.
-impl<T: Scalar> BitOr<Translator<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Motor<T> {
@@ -565,7 +565,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Pseudoscalar -> Motor`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -584,7 +584,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Inner product `Motor | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -618,7 +618,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Motor<T> {
 }
 
 /// Inner product `Rotor | Plane -> Plane`.
-impl<T: Scalar> BitOr<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Plane<T> {
@@ -633,7 +633,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Line -> Motor`.
-impl<T: Scalar> BitOr<Line<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Motor<T> {
@@ -652,7 +652,7 @@ impl<T: Scalar> BitOr<Line<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Point -> Multivector`.
-impl<T: Scalar> BitOr<Point<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Multivector<T> {
@@ -679,7 +679,7 @@ impl<T: Scalar> BitOr<Point<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -698,7 +698,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Rotor -> Rotor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Rotor<T> {
@@ -713,7 +713,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Translator -> Motor`.
-impl<T: Scalar> BitOr<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Motor<T> {
@@ -732,7 +732,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Pseudoscalar -> Motor`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -751,7 +751,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Inner product `Rotor | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -778,7 +778,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Rotor<T> {
 }
 
 /// Inner product `Translator | Plane -> Plane`.
-impl<T: Scalar> BitOr<Plane<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Plane<T> {
@@ -793,7 +793,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Line -> Line`.
-impl<T: Scalar> BitOr<Line<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Translator<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Line<T> {
@@ -810,7 +810,7 @@ impl<T: Scalar> BitOr<Line<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Point -> Point`.
-impl<T: Scalar> BitOr<Point<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Point<T> {
@@ -820,7 +820,7 @@ impl<T: Scalar> BitOr<Point<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -839,7 +839,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Rotor -> Motor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Motor<T> {
@@ -858,7 +858,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Translator -> Translator`.
-impl<T: Scalar> BitOr<Translator<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Translator<T> {
@@ -873,7 +873,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Translator<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -883,7 +883,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Translator<T> {
 }
 
 /// Inner product `Translator | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -910,7 +910,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Translator<T> {
 }
 
 /// Inner product `Pseudoscalar | Plane -> Point`.
-impl<T: Scalar> BitOr<Plane<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Pseudoscalar<T> {
     type Output = Point<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Point<T> {
@@ -920,7 +920,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Line -> Line`.
-impl<T: Scalar> BitOr<Line<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Pseudoscalar<T> {
     type Output = Line<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Line<T> {
@@ -937,7 +937,7 @@ impl<T: Scalar> BitOr<Line<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Point -> Plane`.
-impl<T: Scalar> BitOr<Point<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Pseudoscalar<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Plane<T> {
@@ -947,7 +947,7 @@ impl<T: Scalar> BitOr<Point<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Motor -> Motor`.
-impl<T: Scalar> BitOr<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Motor<T> {
@@ -966,7 +966,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Rotor -> Motor`.
-impl<T: Scalar> BitOr<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Motor<T> {
@@ -985,7 +985,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Translator -> Pseudoscalar`.
-impl<T: Scalar> BitOr<Translator<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Pseudoscalar<T> {
@@ -995,7 +995,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Pseudoscalar | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {
@@ -1022,7 +1022,7 @@ impl<T: Scalar> BitOr<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Inner product `Multivector | Plane -> Multivector`.
-impl<T: Scalar> BitOr<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Plane<T>) -> Multivector<T> {
@@ -1049,7 +1049,7 @@ impl<T: Scalar> BitOr<Plane<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Line -> Multivector`.
-impl<T: Scalar> BitOr<Line<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Line<T>) -> Multivector<T> {
@@ -1078,7 +1078,7 @@ impl<T: Scalar> BitOr<Line<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Point -> Multivector`.
-impl<T: Scalar> BitOr<Point<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Point<T>) -> Multivector<T> {
@@ -1105,7 +1105,7 @@ impl<T: Scalar> BitOr<Point<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Motor -> Multivector`.
-impl<T: Scalar> BitOr<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Motor<T>) -> Multivector<T> {
@@ -1136,7 +1136,7 @@ impl<T: Scalar> BitOr<Motor<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Rotor -> Multivector`.
-impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Rotor<T>) -> Multivector<T> {
@@ -1163,7 +1163,7 @@ impl<T: Scalar> BitOr<Rotor<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Translator -> Multivector`.
-impl<T: Scalar> BitOr<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Translator<T>) -> Multivector<T> {
@@ -1190,7 +1190,7 @@ impl<T: Scalar> BitOr<Translator<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitOr<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1217,7 +1217,7 @@ impl<T: Scalar> BitOr<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Inner product `Multivector | Multivector -> Multivector`.
-impl<T: Scalar> BitOr<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitOr<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitor(self, b: Multivector<T>) -> Multivector<T> {

@@ -8,11 +8,11 @@
 
 use core::ops::BitXor;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
 /// Outer product `Plane ^ Plane -> Line`.
-impl<T: Scalar> BitXor<Plane<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Plane<T> {
     type Output = Line<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Line<T> {
@@ -29,7 +29,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Line -> Point`.
-impl<T: Scalar> BitXor<Line<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Plane<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Point<T> {
@@ -44,7 +44,7 @@ impl<T: Scalar> BitXor<Line<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Point -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Point<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Point<T>> for Plane<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Point<T>) -> Pseudoscalar<T> {
@@ -54,7 +54,7 @@ impl<T: Scalar> BitXor<Point<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Motor -> Multivector`.
-impl<T: Scalar> BitXor<Motor<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Multivector<T> {
@@ -81,7 +81,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -108,7 +108,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Translator -> Multivector`.
-impl<T: Scalar> BitXor<Translator<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Multivector<T> {
@@ -135,7 +135,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Plane<T> {
 }
 
 /// Outer product `Plane ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -162,7 +162,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Plane<T> {
 }
 
 /// Outer product `Line ^ Plane -> Point`.
-impl<T: Scalar> BitXor<Plane<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Line<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Point<T> {
@@ -177,7 +177,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Line<T> {
 }
 
 /// Outer product `Line ^ Line -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Line<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Line<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Pseudoscalar<T> {
@@ -194,7 +194,7 @@ impl<T: Scalar> BitXor<Line<T>> for Line<T> {
 }
 
 /// Outer product `Line ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -218,7 +218,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Line<T> {
 }
 
 /// Outer product `Line ^ Rotor -> Motor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Motor<T> {
@@ -237,7 +237,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Line<T> {
 }
 
 /// Outer product `Line ^ Translator -> Motor`.
-impl<T: Scalar> BitXor<Translator<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Motor<T> {
@@ -256,7 +256,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Line<T> {
 }
 
 /// Outer product `Line ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Line<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -288,7 +288,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Line<T> {
 }
 
 /// Outer product `Point ^ Plane -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Plane<T>> for Point<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Point<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Pseudoscalar<T> {
@@ -298,7 +298,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Point<T> {
 }
 
 /// Outer product `Point ^ Motor -> Point`.
-impl<T: Scalar> BitXor<Motor<T>> for Point<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Point<T> {
@@ -308,7 +308,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Point<T> {
 }
 
 /// Outer product `Point ^ Rotor -> Point`.
-impl<T: Scalar> BitXor<Rotor<T>> for Point<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Point<T> {
@@ -318,7 +318,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Point<T> {
 }
 
 /// Outer product `Point ^ Translator -> Point`.
-impl<T: Scalar> BitXor<Translator<T>> for Point<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Point<T> {
@@ -328,7 +328,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Point<T> {
 }
 
 /// Outer product `Point ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Point<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -355,7 +355,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Point<T> {
 }
 
 /// Outer product `Motor ^ Plane -> Multivector`.
-impl<T: Scalar> BitXor<Plane<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Multivector<T> {
@@ -382,7 +382,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Line -> Motor`.
-impl<T: Scalar> BitXor<Line<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Motor<T> {
@@ -406,7 +406,7 @@ impl<T: Scalar> BitXor<Line<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Point -> Point`.
-impl<T: Scalar> BitXor<Point<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Point<T>> for Motor<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Point<T>) -> Point<T> {
@@ -416,7 +416,7 @@ impl<T: Scalar> BitXor<Point<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -442,7 +442,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Rotor -> Motor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Motor<T> {
@@ -461,7 +461,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Translator -> Motor`.
-impl<T: Scalar> BitXor<Translator<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Motor<T> {
@@ -480,7 +480,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Motor<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -490,7 +490,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Outer product `Motor ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -524,7 +524,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Motor<T> {
 }
 
 /// Outer product `Rotor ^ Plane -> Multivector`.
-impl<T: Scalar> BitXor<Plane<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Multivector<T> {
@@ -551,7 +551,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Line -> Motor`.
-impl<T: Scalar> BitXor<Line<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Motor<T> {
@@ -570,7 +570,7 @@ impl<T: Scalar> BitXor<Line<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Point -> Point`.
-impl<T: Scalar> BitXor<Point<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Point<T>> for Rotor<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Point<T>) -> Point<T> {
@@ -580,7 +580,7 @@ impl<T: Scalar> BitXor<Point<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -599,7 +599,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Rotor -> Rotor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Rotor<T> {
@@ -614,7 +614,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Translator -> Motor`.
-impl<T: Scalar> BitXor<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Rotor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Motor<T> {
@@ -633,7 +633,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Rotor<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -643,7 +643,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Outer product `Rotor ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -670,7 +670,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Rotor<T> {
 }
 
 /// Outer product `Translator ^ Plane -> Multivector`.
-impl<T: Scalar> BitXor<Plane<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Multivector<T> {
@@ -697,7 +697,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Line -> Motor`.
-impl<T: Scalar> BitXor<Line<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Motor<T> {
@@ -716,7 +716,7 @@ impl<T: Scalar> BitXor<Line<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Point -> Point`.
-impl<T: Scalar> BitXor<Point<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Point<T>> for Translator<T> {
     type Output = Point<T>;
     #[inline]
     fn bitxor(self, b: Point<T>) -> Point<T> {
@@ -726,7 +726,7 @@ impl<T: Scalar> BitXor<Point<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Motor -> Motor`.
-impl<T: Scalar> BitXor<Motor<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Motor<T> {
@@ -745,7 +745,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Rotor -> Motor`.
-impl<T: Scalar> BitXor<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Translator<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Motor<T> {
@@ -764,7 +764,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Translator -> Translator`.
-impl<T: Scalar> BitXor<Translator<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Translator<T> {
@@ -779,7 +779,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Translator<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -789,7 +789,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Translator<T> {
 }
 
 /// Outer product `Translator ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {
@@ -816,7 +816,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Translator<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Motor -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Pseudoscalar<T> {
@@ -826,7 +826,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Rotor -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Pseudoscalar<T> {
@@ -836,7 +836,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Translator -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Translator<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Pseudoscalar<T> {
@@ -846,7 +846,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Pseudoscalar ^ Multivector -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Pseudoscalar<T> {
@@ -856,7 +856,7 @@ impl<T: Scalar> BitXor<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Outer product `Multivector ^ Plane -> Multivector`.
-impl<T: Scalar> BitXor<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Plane<T>) -> Multivector<T> {
@@ -883,7 +883,7 @@ impl<T: Scalar> BitXor<Plane<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Line -> Multivector`.
-impl<T: Scalar> BitXor<Line<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Line<T>) -> Multivector<T> {
@@ -915,7 +915,7 @@ impl<T: Scalar> BitXor<Line<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Point -> Multivector`.
-impl<T: Scalar> BitXor<Point<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Point<T>) -> Multivector<T> {
@@ -942,7 +942,7 @@ impl<T: Scalar> BitXor<Point<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Motor -> Multivector`.
-impl<T: Scalar> BitXor<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Motor<T>) -> Multivector<T> {
@@ -976,7 +976,7 @@ impl<T: Scalar> BitXor<Motor<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Rotor -> Multivector`.
-impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Rotor<T>) -> Multivector<T> {
@@ -1003,7 +1003,7 @@ impl<T: Scalar> BitXor<Rotor<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Translator -> Multivector`.
-impl<T: Scalar> BitXor<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Translator<T>) -> Multivector<T> {
@@ -1030,7 +1030,7 @@ impl<T: Scalar> BitXor<Translator<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitXor<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Pseudoscalar<T>> for Multivector<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitxor(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -1040,7 +1040,7 @@ impl<T: Scalar> BitXor<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Outer product `Multivector ^ Multivector -> Multivector`.
-impl<T: Scalar> BitXor<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitXor<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitxor(self, b: Multivector<T>) -> Multivector<T> {

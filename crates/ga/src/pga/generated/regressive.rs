@@ -9,11 +9,11 @@
 
 use core::ops::BitAnd;
 
-use crate::Scalar;
+use crate::Coefficient;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
 /// Regressive product `Plane & Point -> scalar`.
-impl<T: Scalar> BitAnd<Point<T>> for Plane<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Plane<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Point<T>) -> T {
@@ -23,7 +23,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Plane<T> {
 }
 
 /// Regressive product `Plane & Motor -> Plane`.
-impl<T: Scalar> BitAnd<Motor<T>> for Plane<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Plane<T> {
@@ -33,7 +33,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Plane<T> {
 }
 
 /// Regressive product `Plane & Pseudoscalar -> Plane`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Plane<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Plane<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Plane<T> {
@@ -43,7 +43,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Plane<T> {
 }
 
 /// Regressive product `Plane & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Plane<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Plane<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -70,7 +70,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Plane<T> {
 }
 
 /// Regressive product `Line & Line -> scalar`.
-impl<T: Scalar> BitAnd<Line<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Line<T>) -> T {
@@ -85,7 +85,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Point -> Plane`.
-impl<T: Scalar> BitAnd<Point<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Line<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Plane<T> {
@@ -100,7 +100,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Motor -> Motor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Line<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Motor<T> {
@@ -124,7 +124,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Rotor -> scalar`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> T {
@@ -134,7 +134,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Translator -> scalar`.
-impl<T: Scalar> BitAnd<Translator<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Line<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Translator<T>) -> T {
@@ -144,7 +144,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Pseudoscalar -> Line`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Line<T> {
     type Output = Line<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Line<T> {
@@ -161,7 +161,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Line<T> {
 }
 
 /// Regressive product `Line & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Line<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Line<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -193,7 +193,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Line<T> {
 }
 
 /// Regressive product `Point & Plane -> scalar`.
-impl<T: Scalar> BitAnd<Plane<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Plane<T>> for Point<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Plane<T>) -> T {
@@ -203,7 +203,7 @@ impl<T: Scalar> BitAnd<Plane<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Line -> Plane`.
-impl<T: Scalar> BitAnd<Line<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Line<T>) -> Plane<T> {
@@ -218,7 +218,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Point -> Line`.
-impl<T: Scalar> BitAnd<Point<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Point<T> {
     type Output = Line<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Line<T> {
@@ -235,7 +235,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Motor -> Multivector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Multivector<T> {
@@ -262,7 +262,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Rotor -> Plane`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Plane<T> {
@@ -277,7 +277,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Translator -> Plane`.
-impl<T: Scalar> BitAnd<Translator<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Point<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Translator<T>) -> Plane<T> {
@@ -292,7 +292,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Pseudoscalar -> Point`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Point<T> {
     type Output = Point<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Point<T> {
@@ -307,7 +307,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Point<T> {
 }
 
 /// Regressive product `Point & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Point<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Point<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -334,7 +334,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Point<T> {
 }
 
 /// Regressive product `Motor & Plane -> Plane`.
-impl<T: Scalar> BitAnd<Plane<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Plane<T>> for Motor<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Plane<T>) -> Plane<T> {
@@ -344,7 +344,7 @@ impl<T: Scalar> BitAnd<Plane<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Line -> Motor`.
-impl<T: Scalar> BitAnd<Line<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Line<T>) -> Motor<T> {
@@ -368,7 +368,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Point -> Multivector`.
-impl<T: Scalar> BitAnd<Point<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Multivector<T> {
@@ -395,7 +395,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Motor -> Motor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Motor<T> {
@@ -421,7 +421,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Rotor -> Rotor`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Motor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Rotor<T> {
@@ -436,7 +436,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Translator -> Translator`.
-impl<T: Scalar> BitAnd<Translator<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Motor<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitand(self, b: Translator<T>) -> Translator<T> {
@@ -451,7 +451,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Pseudoscalar -> Motor`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Motor<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Motor<T> {
@@ -470,7 +470,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Motor<T> {
 }
 
 /// Regressive product `Motor & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Motor<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Motor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -504,7 +504,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Motor<T> {
 }
 
 /// Regressive product `Rotor & Line -> scalar`.
-impl<T: Scalar> BitAnd<Line<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Line<T>) -> T {
@@ -514,7 +514,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Point -> Plane`.
-impl<T: Scalar> BitAnd<Point<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Rotor<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Plane<T> {
@@ -529,7 +529,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Motor -> Rotor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Rotor<T> {
@@ -544,7 +544,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Translator -> scalar`.
-impl<T: Scalar> BitAnd<Translator<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Rotor<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Translator<T>) -> T {
@@ -554,7 +554,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Pseudoscalar -> Rotor`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Rotor<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Rotor<T> {
@@ -564,7 +564,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Rotor<T> {
 }
 
 /// Regressive product `Rotor & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Rotor<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -591,7 +591,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Rotor<T> {
 }
 
 /// Regressive product `Translator & Line -> scalar`.
-impl<T: Scalar> BitAnd<Line<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Line<T>) -> T {
@@ -601,7 +601,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Translator<T> {
 }
 
 /// Regressive product `Translator & Point -> Plane`.
-impl<T: Scalar> BitAnd<Point<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Translator<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Plane<T> {
@@ -616,7 +616,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Translator<T> {
 }
 
 /// Regressive product `Translator & Motor -> Translator`.
-impl<T: Scalar> BitAnd<Motor<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Translator<T> {
@@ -631,7 +631,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Translator<T> {
 }
 
 /// Regressive product `Translator & Rotor -> scalar`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Translator<T> {
     type Output = T;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> T {
@@ -641,7 +641,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Translator<T> {
 }
 
 /// Regressive product `Translator & Pseudoscalar -> Translator`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Translator<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Translator<T> {
@@ -656,7 +656,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Translator<T> {
 }
 
 /// Regressive product `Translator & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Translator<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Translator<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -683,7 +683,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Translator<T> {
 }
 
 /// Regressive product `Pseudoscalar & Plane -> Plane`.
-impl<T: Scalar> BitAnd<Plane<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Plane<T>> for Pseudoscalar<T> {
     type Output = Plane<T>;
     #[inline]
     fn bitand(self, b: Plane<T>) -> Plane<T> {
@@ -693,7 +693,7 @@ impl<T: Scalar> BitAnd<Plane<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Line -> Line`.
-impl<T: Scalar> BitAnd<Line<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Pseudoscalar<T> {
     type Output = Line<T>;
     #[inline]
     fn bitand(self, b: Line<T>) -> Line<T> {
@@ -710,7 +710,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Point -> Point`.
-impl<T: Scalar> BitAnd<Point<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Pseudoscalar<T> {
     type Output = Point<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Point<T> {
@@ -725,7 +725,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Motor -> Motor`.
-impl<T: Scalar> BitAnd<Motor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Pseudoscalar<T> {
     type Output = Motor<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Motor<T> {
@@ -744,7 +744,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Rotor -> Rotor`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Pseudoscalar<T> {
     type Output = Rotor<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Rotor<T> {
@@ -754,7 +754,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Translator -> Translator`.
-impl<T: Scalar> BitAnd<Translator<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Pseudoscalar<T> {
     type Output = Translator<T>;
     #[inline]
     fn bitand(self, b: Translator<T>) -> Translator<T> {
@@ -769,7 +769,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Pseudoscalar -> Pseudoscalar`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
     type Output = Pseudoscalar<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Pseudoscalar<T> {
@@ -779,7 +779,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Pseudoscalar & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Pseudoscalar<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Pseudoscalar<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {
@@ -806,7 +806,7 @@ impl<T: Scalar> BitAnd<Multivector<T>> for Pseudoscalar<T> {
 }
 
 /// Regressive product `Multivector & Plane -> Multivector`.
-impl<T: Scalar> BitAnd<Plane<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Plane<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Plane<T>) -> Multivector<T> {
@@ -833,7 +833,7 @@ impl<T: Scalar> BitAnd<Plane<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Line -> Multivector`.
-impl<T: Scalar> BitAnd<Line<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Line<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Line<T>) -> Multivector<T> {
@@ -865,7 +865,7 @@ impl<T: Scalar> BitAnd<Line<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Point -> Multivector`.
-impl<T: Scalar> BitAnd<Point<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Point<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Point<T>) -> Multivector<T> {
@@ -892,7 +892,7 @@ impl<T: Scalar> BitAnd<Point<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Motor -> Multivector`.
-impl<T: Scalar> BitAnd<Motor<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Motor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Motor<T>) -> Multivector<T> {
@@ -926,7 +926,7 @@ impl<T: Scalar> BitAnd<Motor<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Rotor -> Multivector`.
-impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Rotor<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Rotor<T>) -> Multivector<T> {
@@ -953,7 +953,7 @@ impl<T: Scalar> BitAnd<Rotor<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Translator -> Multivector`.
-impl<T: Scalar> BitAnd<Translator<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Translator<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Translator<T>) -> Multivector<T> {
@@ -980,7 +980,7 @@ impl<T: Scalar> BitAnd<Translator<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Pseudoscalar -> Multivector`.
-impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Pseudoscalar<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Pseudoscalar<T>) -> Multivector<T> {
@@ -1007,7 +1007,7 @@ impl<T: Scalar> BitAnd<Pseudoscalar<T>> for Multivector<T> {
 }
 
 /// Regressive product `Multivector & Multivector -> Multivector`.
-impl<T: Scalar> BitAnd<Multivector<T>> for Multivector<T> {
+impl<T: Coefficient> BitAnd<Multivector<T>> for Multivector<T> {
     type Output = Multivector<T>;
     #[inline]
     fn bitand(self, b: Multivector<T>) -> Multivector<T> {

@@ -4,7 +4,7 @@
 
 use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
-use crate::Scalar;
+use crate::{Coefficient, Scalar};
 
 /// A plane (grade 1) `e0 e0 + e1 e1 + e2 e2 + e3 e3`: the plane `e1 x + e2 y + e3 z + e0 = 0`.
 ///
@@ -116,7 +116,7 @@ impl<T: Scalar> Plane<T> {
     }
 }
 
-impl<T: Scalar> Add for Plane<T> {
+impl<T: Coefficient> Add for Plane<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -124,7 +124,7 @@ impl<T: Scalar> Add for Plane<T> {
     }
 }
 
-impl<T: Scalar> Sub for Plane<T> {
+impl<T: Coefficient> Sub for Plane<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -132,7 +132,7 @@ impl<T: Scalar> Sub for Plane<T> {
     }
 }
 
-impl<T: Scalar> Neg for Plane<T> {
+impl<T: Coefficient> Neg for Plane<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -140,7 +140,7 @@ impl<T: Scalar> Neg for Plane<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Plane<T> {
+impl<T: Coefficient> Mul<T> for Plane<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -356,7 +356,7 @@ impl<T: Scalar> Line<T> {
     }
 }
 
-impl<T: Scalar> Add for Line<T> {
+impl<T: Coefficient> Add for Line<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -371,7 +371,7 @@ impl<T: Scalar> Add for Line<T> {
     }
 }
 
-impl<T: Scalar> Sub for Line<T> {
+impl<T: Coefficient> Sub for Line<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -386,7 +386,7 @@ impl<T: Scalar> Sub for Line<T> {
     }
 }
 
-impl<T: Scalar> Neg for Line<T> {
+impl<T: Coefficient> Neg for Line<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -401,7 +401,7 @@ impl<T: Scalar> Neg for Line<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Line<T> {
+impl<T: Coefficient> Mul<T> for Line<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -588,7 +588,7 @@ impl<T: Scalar> Point<T> {
     }
 }
 
-impl<T: Scalar> Add for Point<T> {
+impl<T: Coefficient> Add for Point<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -601,7 +601,7 @@ impl<T: Scalar> Add for Point<T> {
     }
 }
 
-impl<T: Scalar> Sub for Point<T> {
+impl<T: Coefficient> Sub for Point<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -614,7 +614,7 @@ impl<T: Scalar> Sub for Point<T> {
     }
 }
 
-impl<T: Scalar> Neg for Point<T> {
+impl<T: Coefficient> Neg for Point<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -622,7 +622,7 @@ impl<T: Scalar> Neg for Point<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Point<T> {
+impl<T: Coefficient> Mul<T> for Point<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -866,7 +866,7 @@ impl<T: Scalar> Motor<T> {
     }
 }
 
-impl<T: Scalar> Add for Motor<T> {
+impl<T: Coefficient> Add for Motor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -883,7 +883,7 @@ impl<T: Scalar> Add for Motor<T> {
     }
 }
 
-impl<T: Scalar> Sub for Motor<T> {
+impl<T: Coefficient> Sub for Motor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -900,7 +900,7 @@ impl<T: Scalar> Sub for Motor<T> {
     }
 }
 
-impl<T: Scalar> Neg for Motor<T> {
+impl<T: Coefficient> Neg for Motor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -917,7 +917,7 @@ impl<T: Scalar> Neg for Motor<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Motor<T> {
+impl<T: Coefficient> Mul<T> for Motor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1124,7 +1124,7 @@ impl<T: Scalar> Rotor<T> {
     }
 }
 
-impl<T: Scalar> Add for Rotor<T> {
+impl<T: Coefficient> Add for Rotor<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1137,7 +1137,7 @@ impl<T: Scalar> Add for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Sub for Rotor<T> {
+impl<T: Coefficient> Sub for Rotor<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1150,7 +1150,7 @@ impl<T: Scalar> Sub for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Neg for Rotor<T> {
+impl<T: Coefficient> Neg for Rotor<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1158,7 +1158,7 @@ impl<T: Scalar> Neg for Rotor<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Rotor<T> {
+impl<T: Coefficient> Mul<T> for Rotor<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1347,7 +1347,7 @@ impl<T: Scalar> Translator<T> {
     }
 }
 
-impl<T: Scalar> Add for Translator<T> {
+impl<T: Coefficient> Add for Translator<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1360,7 +1360,7 @@ impl<T: Scalar> Add for Translator<T> {
     }
 }
 
-impl<T: Scalar> Sub for Translator<T> {
+impl<T: Coefficient> Sub for Translator<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1373,7 +1373,7 @@ impl<T: Scalar> Sub for Translator<T> {
     }
 }
 
-impl<T: Scalar> Neg for Translator<T> {
+impl<T: Coefficient> Neg for Translator<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1381,7 +1381,7 @@ impl<T: Scalar> Neg for Translator<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Translator<T> {
+impl<T: Coefficient> Mul<T> for Translator<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -1540,7 +1540,7 @@ impl<T: Scalar> Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Add for Pseudoscalar<T> {
+impl<T: Coefficient> Add for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -1548,7 +1548,7 @@ impl<T: Scalar> Add for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Sub for Pseudoscalar<T> {
+impl<T: Coefficient> Sub for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -1556,7 +1556,7 @@ impl<T: Scalar> Sub for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Neg for Pseudoscalar<T> {
+impl<T: Coefficient> Neg for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -1564,7 +1564,7 @@ impl<T: Scalar> Neg for Pseudoscalar<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Pseudoscalar<T> {
+impl<T: Coefficient> Mul<T> for Pseudoscalar<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
@@ -2191,7 +2191,7 @@ impl<T: Scalar> Multivector<T> {
     }
 }
 
-impl<T: Scalar> Add for Multivector<T> {
+impl<T: Coefficient> Add for Multivector<T> {
     type Output = Self;
     #[inline]
     fn add(self, b: Self) -> Self {
@@ -2216,7 +2216,7 @@ impl<T: Scalar> Add for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Sub for Multivector<T> {
+impl<T: Coefficient> Sub for Multivector<T> {
     type Output = Self;
     #[inline]
     fn sub(self, b: Self) -> Self {
@@ -2241,7 +2241,7 @@ impl<T: Scalar> Sub for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Neg for Multivector<T> {
+impl<T: Coefficient> Neg for Multivector<T> {
     type Output = Self;
     #[inline]
     fn neg(self) -> Self {
@@ -2266,7 +2266,7 @@ impl<T: Scalar> Neg for Multivector<T> {
     }
 }
 
-impl<T: Scalar> Mul<T> for Multivector<T> {
+impl<T: Coefficient> Mul<T> for Multivector<T> {
     type Output = Self;
     #[inline]
     fn mul(self, k: T) -> Self {
