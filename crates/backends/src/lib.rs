@@ -59,8 +59,9 @@
 //!    at once. The watertight row has them in every algebra, four triangles per test: `la` in
 //!    glam's 4-vectors, the GA cells in their own types on four-lane coefficients
 //!    (`ga::Lanes4`: `Vector<Lanes4<f32>>` is four vectors, and the generated products act
-//!    lane by lane), with the leaf stage of `kernels_g3::blocks`. The other rows test one
-//!    triangle at a time in every cell.
+//!    lane by lane), with the leaf stage of `kernels_g3::blocks`, for closest hits (any-hit
+//!    queries test the GA cells' triangles one by one: their blocks lost there). The other rows
+//!    test one triangle at a time in every cell.
 //! 3. **The same decision order and tie rule**: the tests made in the same order (which
 //!    decides which branch ends most tests), the same closed or half-open edges, the same tie
 //!    rule and exact fallback for watertight methods, the same `t_max` slack.

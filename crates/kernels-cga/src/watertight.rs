@@ -214,7 +214,7 @@ impl<T: Scalar> Intersector for CgaWatertight<T> {
         })
     }
 
-    kernels_g3::leaf_queries_in_blocks!();
+    kernels_g3::closest_hits_in_blocks!();
 }
 
 /// A vertex `v` in the ray's frame, as the point `eₒ + x e1 + y e2` with `x = (v - o) · ex`,

@@ -1,7 +1,9 @@
-//! The leaf stage of the watertight cells of the GA algebras: a leaf's triangles four at a
-//! time ([`Intersector::intersect_leaf`], [`Intersector::occludes_leaf`]), as `la` tests them,
-//! each cell computing its edge values and distance in its own algebra on four-lane
-//! multivectors ([`ga::Lanes4`]).
+//! The closest-hit leaf stage of the watertight cells of the GA algebras: a leaf's triangles
+//! four at a time ([`Intersector::intersect_leaf`]), as `la` tests them, each cell computing
+//! its edge values and distance in its own algebra on four-lane multivectors
+//! ([`ga::Lanes4`]). Any-hit queries keep the one-by-one loop ([`Intersector::occludes_leaf`]'s
+//! default): the same block test there was 15-20% slower on the bunny's primary rays than
+//! testing the triangles in turn, for reasons not found (`results/README.md`).
 //!
 //! A cell's block test computes, for the four triangles of a block, exactly what its
 //! `intersect` computes for one: the same generated products on [`Lanes4`] coefficients,
@@ -86,12 +88,11 @@ pub trait BlockTest: Intersector {
     ) -> BlockHits<Self::Real>;
 }
 
-/// The two leaf queries of an [`Intersector`] impl whose kernel has a [`BlockTest`]:
-/// [`Intersector::intersect_leaf`] and [`Intersector::occludes_leaf`] by [`intersect_leaf`]
-/// and [`occludes_leaf`]. Used inside the impl, beside `type Block`, `const BLOCK` and
-/// `prepare_blocks`.
+/// The closest-hit leaf query of an [`Intersector`] impl whose kernel has a [`BlockTest`]:
+/// [`Intersector::intersect_leaf`] by [`intersect_leaf`]. Used inside the impl, beside
+/// `type Block`, `const BLOCK` and `prepare_blocks`.
 #[macro_export]
-macro_rules! leaf_queries_in_blocks {
+macro_rules! closest_hits_in_blocks {
     () => {
         #[inline(always)]
         fn intersect_leaf<F>(
@@ -106,18 +107,6 @@ macro_rules! leaf_queries_in_blocks {
             F: FnMut(usize, intersect::TriangleHit<Self::Real>, &mut Self::Real),
         {
             $crate::blocks::intersect_leaf(self, prims, blocks, (ray, rd), limit, found);
-        }
-
-        #[inline(always)]
-        fn occludes_leaf(
-            &self,
-            prims: &[Self::Prim],
-            blocks: &[Self::Block],
-            ray: &intersect::Ray<Self::Real>,
-            rd: &Self::RayData,
-            t_max: Self::Real,
-        ) -> bool {
-            $crate::blocks::occludes_leaf(self, prims, blocks, (ray, rd), t_max)
         }
     };
 }
@@ -152,32 +141,6 @@ pub fn intersect_leaf<I: BlockTest, F>(
             }
         }
     }
-}
-
-/// [`Intersector::occludes_leaf`] for a cell with a [`BlockTest`].
-#[inline(always)]
-pub fn occludes_leaf<I: BlockTest>(
-    kernel: &I,
-    prims: &[I::Prim],
-    blocks: &[I::Block],
-    (ray, rd): (&Ray<I::Real>, &I::RayData),
-    t_max: I::Real,
-) -> bool {
-    let wide = I::wide(ray, rd);
-    for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
-        let (hits, mut fallback, _) = I::block_test(block, lanes(b, prims.len()), &wide, t_max);
-        if hits != 0 {
-            return true;
-        }
-        while fallback != 0 {
-            let k = b * BLOCK + fallback.trailing_zeros() as usize;
-            fallback &= fallback - 1;
-            if kernel.occludes(&prims[k], ray, rd, t_max) {
-                return true;
-            }
-        }
-    }
-    false
 }
 
 /// The blocks of a scene's triangles, [`BLOCK`] at a time, each from the lanes' `split`

@@ -152,7 +152,7 @@ impl<T: GaReal> Intersector for G3WatertightCell<T> {
         })
     }
 
-    crate::leaf_queries_in_blocks!();
+    crate::closest_hits_in_blocks!();
 }
 
 /// A vertex seen along the ray: its coordinates in the basis `ex`, `ey` of the plane

@@ -208,7 +208,7 @@ impl<T: Scalar> Intersector for PgaWatertight<T> {
         })
     }
 
-    kernels_g3::leaf_queries_in_blocks!();
+    kernels_g3::closest_hits_in_blocks!();
 }
 
 /// The ray's origin, planes and direction in every lane, for the block tests.
