@@ -473,6 +473,51 @@ pub fn one_ray_at_a_time<I, F>(
     }
 }
 
+/// The triangles of block `b` of a leaf of `n`, [`Intersector::BLOCK`] to a block, as a mask
+/// of the block's lanes (bit `l` for lane `l`), for kernels with blocks.
+#[inline(always)]
+#[must_use]
+pub fn block_lanes<I: Intersector + ?Sized>(b: usize, n: usize) -> u32 {
+    let left = n - b * I::BLOCK;
+    if left >= I::BLOCK { (1 << I::BLOCK) - 1 } else { (1 << left) - 1 }
+}
+
+/// The end of [`Intersector::intersect_leaf`] for a kernel with blocks, once it has tested
+/// block `b` of a leaf (`prims`) at once against the limit of the block's start: the lanes
+/// `hits`, with `t, u, v` in `out[0..3][lane]`, and the lanes `fallback`, for which the
+/// kernel's [`Intersector::intersect`] decides. Reports them in lane order, each hit checked
+/// again against the limit that the hits before it left and each fallback lane tested with
+/// it, so that the calls of `found` are those of the one-by-one loop.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub fn report_block<I, F, const W: usize>(
+    kernel: &I,
+    prims: &[I::Prim],
+    b: usize,
+    (hits, fallback): (u32, u32),
+    out: &[[I::Real; W]; 3],
+    (ray, ray_data): (&Ray<I::Real>, &I::RayData),
+    limit: &mut I::Real,
+    found: &mut F,
+) where
+    I: Intersector + ?Sized,
+    F: FnMut(usize, TriangleHit<I::Real>, &mut I::Real),
+{
+    let mut report = hits | fallback;
+    while report != 0 {
+        let l = report.trailing_zeros() as usize;
+        report &= report - 1;
+        let k = b * I::BLOCK + l;
+        if fallback >> l & 1 == 1 {
+            if let Some(hit) = kernel.intersect(&prims[k], ray, ray_data, *limit) {
+                found(k, hit, limit);
+            }
+        } else if out[0][l] <= *limit {
+            found(k, TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] }, limit);
+        }
+    }
+}
+
 /// Whether a triangle has zero area, decided exactly: its vertices are collinear, or two of
 /// them coincide. Every back end that promises never to hit a degenerate triangle asks this
 /// once per triangle, at `prepare`.

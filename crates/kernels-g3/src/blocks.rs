@@ -11,8 +11,8 @@
 //! [`crate::watertight::decide_edges`] and [`crate::watertight::finish`] lane by lane, with
 //! the same operations. A lane whose edge values hold an exact zero (or NaN) is handed to the
 //! cell's `intersect`, which takes the exact fallback as it would one by one. And the hits are
-//! reported in lane order, each checked against the limit that the hits before it left, as
-//! `la`'s leaf stage does (`kernels_la::watertight::blocks`): the hits are those of the
+//! reported in lane order, each checked against the limit that the hits before it left
+//! ([`intersect::report_block`], which `la`'s leaf stage calls too): the hits are those of the
 //! one-by-one loop, bit for bit (`intersect::conformance::leaf` tests it).
 
 use ga::lanes::Mask;
@@ -61,13 +61,6 @@ pub fn finish<T: Real>(
     let inv_det = one / det;
     let hit = near & zero.lt(t) & t.le(limit) & t.finite() & det.finite();
     (hit, [t.0, (w_b * inv_det).0, (w_c * inv_det).0])
-}
-
-/// The lanes of block `b` of a leaf of `n` triangles.
-#[inline(always)]
-fn lanes(b: usize, n: usize) -> Mask {
-    let left = n - b * BLOCK;
-    if left >= BLOCK { (1 << BLOCK) - 1 } else { (1 << left) - 1 }
 }
 
 /// A cell's test of a block: what its `intersect` computes, four triangles at a time.
@@ -126,27 +119,16 @@ pub fn intersect_leaf<I: BlockTest, F>(
 {
     let wide = I::wide(ray, rd);
     for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
-        let (hits, fallback, out) = I::block_test(block, lanes(b, prims.len()), &wide, *limit);
-        let mut report = hits | fallback;
-        while report != 0 {
-            let l = report.trailing_zeros() as usize;
-            report &= report - 1;
-            let k = b * BLOCK + l;
-            if fallback >> l & 1 == 1 {
-                if let Some(hit) = kernel.intersect(&prims[k], ray, rd, *limit) {
-                    found(k, hit, limit);
-                }
-            } else if out[0][l] <= *limit {
-                found(k, TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] }, limit);
-            }
-        }
+        let lanes = intersect::block_lanes::<I>(b, prims.len());
+        let (hits, fallback, out) = I::block_test(block, lanes, &wide, *limit);
+        intersect::report_block(kernel, prims, b, (hits, fallback), &out, (ray, rd), limit, found);
     }
 }
 
 /// The blocks of a scene's triangles, [`BLOCK`] at a time, each from the lanes' `split`
 /// parts (`split(prim)` gives a triangle's part for each of a block's `N` fields); lanes past
-/// the end hold the default.
-pub fn blocks_of<P, T: Real + Default, const N: usize, B>(
+/// the end hold zeros.
+pub fn blocks_of<P, T: Real, const N: usize, B>(
     prims: &[P],
     split: impl Fn(&P) -> [T; N],
     make: impl Fn([Lanes4<T>; N]) -> B,

@@ -365,7 +365,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         F: FnMut(usize, TriangleHit<T>, &mut T),
     {
         for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
-            let lanes = Self::lanes(b, prims.len());
+            let lanes = intersect::block_lanes::<Self>(b, prims.len());
             let (candidates, zeros, e, z) = Self::block_edges(block, lanes, rd);
             if candidates | zeros == 0 {
                 continue;
@@ -375,19 +375,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
                 let (mask, values) = Self::block_distances(e, z, rd.splats[5], *limit);
                 (hits, out) = (mask & candidates, values);
             }
-            let mut report = hits | zeros;
-            while report != 0 {
-                let l = report.trailing_zeros() as usize;
-                report &= report - 1;
-                let k = b * BLOCK + l;
-                if zeros >> l & 1 == 1 {
-                    if let Some(hit) = self.intersect(&prims[k], ray, rd, *limit) {
-                        found(k, hit, limit);
-                    }
-                } else if out[0][l] <= *limit {
-                    found(k, TriangleHit { t: out[0][l], u: out[1][l], v: out[2][l] }, limit);
-                }
-            }
+            intersect::report_block(self, prims, b, (hits, zeros), &out, (ray, rd), limit, found);
         }
     }
 
@@ -401,7 +389,7 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         t_max: T,
     ) -> bool {
         for (b, block) in blocks[..prims.len().div_ceil(BLOCK)].iter().enumerate() {
-            let lanes = Self::lanes(b, prims.len());
+            let lanes = intersect::block_lanes::<Self>(b, prims.len());
             let (candidates, mut zeros, e, z) = Self::block_edges(block, lanes, rd);
             let hits = |(mask, _): (u32, _)| mask & candidates != 0;
             if candidates != 0 && hits(Self::block_distances(e, z, rd.splats[5], t_max)) {

@@ -96,11 +96,4 @@ impl<T: GlamReal> Watertight<T> {
             & T::q_finite(t);
         (hit & 0xf, [T::q_lanes(t), T::q_lanes(v * inv_det), T::q_lanes(w * inv_det)])
     }
-
-    /// The lanes of block `b` of a leaf of `n` triangles.
-    #[inline(always)]
-    pub(super) fn lanes(b: usize, n: usize) -> u32 {
-        let left = n - b * BLOCK;
-        if left >= BLOCK { (1 << BLOCK) - 1 } else { (1 << left) - 1 }
-    }
 }
