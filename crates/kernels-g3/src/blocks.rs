@@ -27,6 +27,10 @@ pub const BLOCK: usize = 4;
 /// `t`, `u`, `v` per lane (meaningful on the hits).
 pub type BlockHits<T> = (Mask, Mask, [[T; BLOCK]; 3]);
 
+// Each cell ends its block test by calling `decide_edges`, computing its distance and calling
+// `finish` itself: a shared helper that took the distance as a closure compiled slower
+// (`results/README.md`).
+
 /// [`crate::watertight::decide_edges`] on four triangles: the lanes inside (three non-zero
 /// edge values of one sign) and the lanes for the exact fallback (neither proven outside nor
 /// all decided), within `lanes`.
