@@ -279,7 +279,7 @@ fn npz_rays(bytes: &[u8]) -> Outcome {
         Ok(reader) => reader,
         Err(e) => return Err(one_line(&e)),
     };
-    let (mut values, mut read) = (Vec::new(), 0);
+    let (mut values, mut read) = (Vec::<f64>::new(), 0);
     loop {
         match reader.next_rows(1000, &mut values) {
             Ok(0) => break,

@@ -708,3 +708,99 @@ fn threads_zero_is_one_per_core_and_nothing_is_drawn_off_a_terminal() {
     assert_eq!(v["rays"], 8);
     assert_eq!(names(dir.path()), ["a.npy", "s.json", "square.obj"]);
 }
+
+/// `raycast` reads a file's rays straight into the kernel's precision; the library's
+/// `cast::trace_rays` (the Python module's path) takes `f64` values and rounds each ray as it
+/// traces it. Both must give the same rows, bit for bit: rays whose values round in `f32`,
+/// rays finite in `f64` but not in `f32`, NaN bounds, zero directions, every back end family
+/// and both precisions, with and without bounds.
+#[test]
+fn raycast_reads_rays_rounded_as_the_library_rounds_them() {
+    struct Library<'a> {
+        mesh: &'a scene::Mesh,
+        rays: &'a [f64],
+        stride: usize,
+    }
+    impl backends::Job for Library<'_> {
+        type Output = Vec<f64>;
+        fn run<I: intersect::Intersector + 'static>(self, intersector: I) -> Vec<f64> {
+            let accel = bvh::accel::Accel::build(intersector, &self.mesh.triangles());
+            let columns = render::cast::Columns { point: true, normal: true, ..Default::default() };
+            let mut out = vec![0.0; self.rays.len() / self.stride * columns.count()];
+            render::cast::trace_rays(
+                &accel,
+                self.mesh,
+                self.rays,
+                self.stride,
+                columns,
+                &mut out,
+                &|_| {},
+            );
+            out
+        }
+    }
+
+    let dir = tempfile::tempdir().unwrap();
+    let obj = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../obj/torus.obj");
+    let mesh = scene::Mesh::load(&obj).unwrap();
+    // Origins on a ring around the torus, aimed at points near its centre, in thirds and
+    // sevenths (inexact in f32), then the special rays.
+    let mut rays = Vec::new();
+    for k in 0..400 {
+        let a = f64::from(k) / 7.0;
+        let o = [3.0 * a.cos(), 1.0 / 3.0 + (a * 3.0).sin(), 3.0 * a.sin()];
+        let aim = [f64::from(k % 9) / 30.0, f64::from(k % 5) / 21.0 - 0.1, 0.1 / 3.0];
+        let d = [aim[0] - o[0], aim[1] - o[1], aim[2] - o[2]];
+        let (t_min, t_max) = (f64::from(k % 4) / 3.0, 1.0 + f64::from(k % 11) / 7.0);
+        rays.push([o[0], o[1], o[2], d[0], d[1], d[2], t_min, t_max]);
+    }
+    let aimed = [0.0, 0.0, 3.0, 0.01, 0.02, -1.0, 0.0, f64::INFINITY];
+    let mut special = |k: usize, x: f64| {
+        let mut r = aimed;
+        r[k] = x;
+        rays.push(r);
+    };
+    special(0, 1e300); // finite in f64, infinite in f32: a miss in f32 only
+    special(2, 1e-300); // zero in f32
+    special(6, f64::NAN);
+    special(7, f64::NAN);
+    special(7, 1e-50);
+    special(5, 0.0);
+    rays.push([0.0, 0.0, 3.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+    let out = dir.path().join("hits.npy");
+    for stride in [6, 8] {
+        let values: Vec<f64> = rays.iter().flat_map(|r| r[..stride].to_vec()).collect();
+        let rays_path = dir.path().join(format!("rays-{stride}.npy"));
+        let mut bytes = Vec::new();
+        npy::write(&mut bytes, &[rays.len(), stride], values.iter().copied()).unwrap();
+        std::fs::write(&rays_path, bytes).unwrap();
+        for backend in ["la", "g3-watertight", "pga-mt", "cga-plucker"] {
+            for precision in ["f32", "f64"] {
+                let args: [&dyn AsRef<std::ffi::OsStr>; 10] = [
+                    &obj,
+                    &rays_path,
+                    &out,
+                    &"--backend",
+                    &backend,
+                    &"--precision",
+                    &precision,
+                    &"--with",
+                    &"point,normal",
+                    &"-q",
+                ];
+                ok(&raycast(&args));
+                let got = npy::read_f64_matrix(&std::fs::read(&out).unwrap(), 10).unwrap();
+                let job = Library { mesh: &mesh, rays: &values, stride };
+                let want = backends::dispatch(
+                    backends::Backend::from_name(backend).unwrap(),
+                    backends::Precision::from_name(precision).unwrap(),
+                    job,
+                );
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                assert_eq!(bits(&got.values), bits(&want), "{backend} {precision} stride {stride}");
+                let hits = want.chunks_exact(10).filter(|r| r[1] >= 0.0).count();
+                assert!(hits > 50, "{backend} {precision}: only {hits} hits");
+            }
+        }
+    }
+}

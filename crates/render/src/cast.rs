@@ -7,7 +7,9 @@
 //!
 //! A ray is `stride` values, `stride` 6 or 8: origin x, y, z, direction x, y, z, and with 8,
 //! `t_min` and `t_max` (only hits with `t_min <= t <= t_max` count; with 6, `0 < t`). Values
-//! come as `f64` and are rounded to the kernel's precision. A ray with a NaN or infinite
+//! come as `f32` or `f64` and are rounded to the kernel's precision (once: [`files`] reads
+//! a file's rays straight into the kernel's precision, so that the trace reads no more bytes
+//! per ray than it traces, and [`kernel_ray`] rounds the same way). A ray with a NaN or infinite
 //! origin or direction component after that rounding (a finite `f64` can overflow `f32`), a
 //! zero direction, or a NaN `t_min` or `t_max`, is a miss ([`kernel_ray`]).
 //!
@@ -67,7 +69,8 @@ pub const MISS: [f64; 10] = {
 /// A ray in a kernel's precision with its `t_min` and `t_max`.
 pub type Segment<T> = (Ray<T>, T, T);
 
-/// The ray `r` (`stride` values, see the [module documentation](self)) in precision `T`
+/// The ray `r` (`stride` values in `f32` or `f64`, see the [module documentation](self)) in
+/// precision `T`
 /// with its segment `t_min, t_max`, or `None` for a ray that is a miss by definition.
 ///
 /// # Panics
@@ -78,10 +81,11 @@ pub type Segment<T> = (Ray<T>, T, T);
 // back whole, a store-forwarding stall that cost `raycast` more per ray than a missed ray's
 // whole traversal (`results/README.md`, "raycast's per-ray cost").
 #[inline(always)]
-pub fn kernel_ray<T: Real>(r: &[f64], stride: usize) -> Option<Segment<T>> {
+pub fn kernel_ray<T: Real, V: Real>(r: &[V], stride: usize) -> Option<Segment<T>> {
     let ray: Ray<T> = Ray::new([r[0], r[1], r[2]], [r[3], r[4], r[5]]).cast();
+    let bound = |x: V| T::from_f64(x.to_f64());
     let (t_min, t_max) =
-        if stride == 8 { (T::from_f64(r[6]), T::from_f64(r[7])) } else { (T::ZERO, T::INFINITY) };
+        if stride == 8 { (bound(r[6]), bound(r[7])) } else { (T::ZERO, T::INFINITY) };
     // Rounding to f32 can overflow a finite f64 to infinity: check after the cast.
     let finite = ray.origin.iter().chain(&ray.dir).all(|x| x.is_finite());
     let segment = !t_min.is_nan() && !t_max.is_nan();
@@ -100,10 +104,10 @@ pub fn kernel_ray<T: Real>(r: &[f64], stride: usize) -> Option<Segment<T>> {
 ///
 /// If `stride` is not 6 or 8, `rays.len()` is not a multiple of it, or `out` does not hold
 /// `columns.count()` values per ray.
-pub fn trace_rays<I: Intersector>(
+pub fn trace_rays<I: Intersector, V: Real>(
     accel: &Accel<I>,
     mesh: &Mesh,
-    rays: &[f64],
+    rays: &[V],
     stride: usize,
     columns: Columns,
     out: &mut [f64],
@@ -119,8 +123,11 @@ pub fn trace_rays<I: Intersector>(
     let blocks = rays.par_chunks(stride * RAYS_PER_BLOCK);
     let blocks = blocks.zip(out.par_chunks_mut(width * RAYS_PER_BLOCK)).with_max_len(4);
     blocks.for_each(|(rays, out)| {
-        for (r, h) in rays.chunks_exact(stride).zip(out.chunks_exact_mut(width)) {
-            let ray = kernel_ray::<I::Real>(r, stride);
+        let (ahead, row_ahead) = (rays.as_ptr(), out.as_ptr());
+        for (k, (r, h)) in rays.chunks_exact(stride).zip(out.chunks_exact_mut(width)).enumerate() {
+            prefetch::<false>(ahead.wrapping_add((k + PREFETCH_AHEAD) * stride).cast());
+            prefetch::<true>(row_ahead.wrapping_add((k + PREFETCH_AHEAD) * width).cast());
+            let ray = kernel_ray::<I::Real, V>(r, stride);
             if columns.any_hit {
                 any_hit_row(accel, ray, columns, h);
             } else {
@@ -129,6 +136,35 @@ pub fn trace_rays<I: Intersector>(
         }
         progress(out.len() / width);
     });
+}
+
+/// Rays ahead of the one traced whose values and row [`trace_rays`] asks the cache for.
+///
+/// The rays and rows stream through memory once, a few cache lines per 4 KiB page, and the
+/// hardware prefetcher, which stops at page boundaries, left the loads of each page's first
+/// rays and the stores of their rows waiting on memory: on rays that miss the mesh, about
+/// as long as their trace (`results/README.md`, "`raycast`'s per-ray cost, again"). 64 rays
+/// is 2-4 KiB ahead, a page or so.
+const PREFETCH_AHEAD: usize = 64;
+
+/// A hint to bring the cache line of `p` into the nearest cache, to be written if `WRITE`.
+#[inline(always)]
+fn prefetch<const WRITE: bool>(p: *const u8) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_MM_HINT_ET0, _MM_HINT_T0, _mm_prefetch};
+        // SAFETY: a prefetch reads and writes nothing and never faults, whatever the
+        // address (Intel SDM, PREFETCHh and PREFETCHW); SSE is part of x86-64.
+        unsafe {
+            if WRITE {
+                _mm_prefetch::<_MM_HINT_ET0>(p.cast());
+            } else {
+                _mm_prefetch::<_MM_HINT_T0>(p.cast());
+            }
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
 }
 
 /// The any-hit row of one ray.
@@ -159,7 +195,13 @@ fn closest_hit_row<I: Intersector>(
 ) {
     let hit = ray.and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max));
     let Some(hit) = hit else {
-        h.copy_from_slice(&MISS[..h.len()]);
+        // The first four values as a fixed-size copy: a copy of `h.len()` values is a call
+        // to `memcpy` per missing ray, which cost rays that miss the mesh 10% of their rate.
+        h[..4].copy_from_slice(&MISS[..4]);
+        let width = h.len();
+        if width > 4 {
+            h[4..].copy_from_slice(&MISS[4..width]);
+        }
         return;
     };
     let (u, v) = (hit.u.to_f64(), hit.v.to_f64());
@@ -207,8 +249,8 @@ mod tests {
     #[test]
     fn misses_by_definition() {
         let ok = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.5, 2.0];
-        assert!(kernel_ray::<f32>(&ok, 8).is_some());
-        let (_, t_min, t_max) = kernel_ray::<f64>(&ok, 6).unwrap();
+        assert!(kernel_ray::<f32, f64>(&ok, 8).is_some());
+        let (_, t_min, t_max) = kernel_ray::<f64, f64>(&ok, 6).unwrap();
         assert_eq!((t_min, t_max), (0.0, f64::INFINITY));
         for (k, bad) in [(5, 0.0), (0, f64::NAN), (3, f64::INFINITY), (6, f64::NAN), (7, f64::NAN)]
         {
@@ -217,12 +259,12 @@ mod tests {
             if k == 5 {
                 r[3..6].fill(0.0);
             }
-            assert!(kernel_ray::<f64>(&r, 8).is_none(), "component {k} = {bad}");
+            assert!(kernel_ray::<f64, f64>(&r, 8).is_none(), "component {k} = {bad}");
         }
         // Finite in f64, infinite in f32.
         let mut r = ok;
         r[0] = 1e300;
-        assert!(kernel_ray::<f64>(&r, 6).is_some());
-        assert!(kernel_ray::<f32>(&r, 6).is_none());
+        assert!(kernel_ray::<f64, f64>(&r, 6).is_some());
+        assert!(kernel_ray::<f32, f64>(&r, 6).is_none());
     }
 }

@@ -269,7 +269,9 @@ impl Job for CastJob<'_> {
         let mut sampled = Vec::new();
         let hits = self.hits.write_streamed(|w, fail| -> anyhow::Result<()> {
             let mut sink = HitsWriter::new(w, self.layout, n, width).map_err(fail)?;
-            let (mut rays, mut hits) = (Vec::new(), Vec::new());
+            // The rays in the kernel's precision, as `kernel_ray` would round them: the
+            // trace then reads no more bytes per ray than the kernel takes.
+            let (mut rays, mut hits) = (Vec::<I::Real>::new(), Vec::new());
             let mut samples = self.samples.iter().copied().peekable();
             let mut first = 0;
             loop {
@@ -280,7 +282,8 @@ impl Job for CastJob<'_> {
                     break;
                 }
                 while let Some(k) = samples.next_if(|&k| k < first + got) {
-                    sampled.push(rays[stride * (k - first)..stride * (k - first + 1)].to_vec());
+                    let ray = &rays[stride * (k - first)..stride * (k - first + 1)];
+                    sampled.push(ray.iter().map(|x| x.to_f64()).collect::<Vec<_>>());
                 }
                 hits.resize(got * width, 0.0);
                 let t = Instant::now();
@@ -299,7 +302,7 @@ impl Job for CastJob<'_> {
         let samples = sampled
             .into_iter()
             .map(|r| {
-                let t = cast::kernel_ray::<I::Real>(&r, stride)
+                let t = cast::kernel_ray::<I::Real, f64>(&r, stride)
                     .and_then(|(ray, t_min, t_max)| accel.closest_hit_between(&ray, t_min, t_max))
                     .map(|hit| hit.t.to_f64());
                 (r, t)

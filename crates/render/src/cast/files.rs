@@ -19,6 +19,7 @@ use std::fs::File;
 use std::io::{self, BufReader, Read, Seek, Write};
 use std::path::Path;
 
+use intersect::Real;
 use zip::ZipArchive;
 use zip::write::{SimpleFileOptions, ZipWriter};
 
@@ -230,7 +231,8 @@ fn shown_names(names: &[String]) -> String {
     shown.join(", ")
 }
 
-/// Reads the rays of a [`RaysFile`] in chunks, widened to `f64`.
+/// Reads the rays of a [`RaysFile`] in chunks, in the precision asked for (see
+/// [`npy::decode`]).
 pub struct RowReader<'a> {
     data: Box<dyn Read + 'a>,
     info: npy::Info,
@@ -239,14 +241,19 @@ pub struct RowReader<'a> {
 }
 
 impl RowReader<'_> {
-    /// Replaces `values` with the next rays, at most `max_rows` of them; returns how many
-    /// (0 once every ray has been read).
+    /// Replaces `values` with the next rays, at most `max_rows` of them, in `V`'s precision
+    /// (`raycast` reads them in its kernel's, as `cast::kernel_ray` would round them);
+    /// returns how many (0 once every ray has been read).
     ///
     /// # Errors
     ///
     /// The reader's I/O error, or [`io::ErrorKind::UnexpectedEof`] if the data ends before
     /// the shape says (the file shrank since it was opened).
-    pub fn next_rows(&mut self, max_rows: usize, values: &mut Vec<f64>) -> io::Result<usize> {
+    pub fn next_rows<V: Real>(
+        &mut self,
+        max_rows: usize,
+        values: &mut Vec<V>,
+    ) -> io::Result<usize> {
         let rows = max_rows.min(self.left);
         let size = if self.info.was_f32 { 4 } else { 8 };
         self.bytes.resize(rows * self.info.columns * size, 0);

@@ -18,6 +18,8 @@
 
 use std::io::{self, Read, Write};
 
+use intersect::Real;
+
 const MAGIC: &[u8; 6] = b"\x93NUMPY";
 
 /// A value type that `.npy` files can hold.
@@ -277,21 +279,25 @@ fn read_up_to(r: &mut impl Read, buf: &mut [u8]) -> usize {
     n
 }
 
-/// Appends the little-endian `f32` (`was_f32`) or `f64` values of `data` to `out`, widened to
-/// `f64` (exactly).
+/// Appends the little-endian `f32` (`was_f32`) or `f64` values of `data` to `out` in `V`'s
+/// precision: exactly where `V` holds them (`f32` into `f32` or `f64`), else rounded to
+/// nearest (`f64` into `f32`).
 ///
 /// # Panics
 ///
 /// If `data` is not a whole number of values.
-pub fn decode(data: &[u8], was_f32: bool, out: &mut Vec<f64>) {
+pub fn decode<V: Real>(data: &[u8], was_f32: bool, out: &mut Vec<V>) {
     if was_f32 {
         assert!(data.len().is_multiple_of(4), "not whole f32 values");
         out.extend(
-            data.chunks_exact(4).map(|c| f64::from(f32::from_le_bytes(c.try_into().expect("4")))),
+            data.chunks_exact(4)
+                .map(|c| V::from_f64(f64::from(f32::from_le_bytes(c.try_into().expect("4"))))),
         );
     } else {
         assert!(data.len().is_multiple_of(8), "not whole f64 values");
-        out.extend(data.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().expect("8"))));
+        out.extend(
+            data.chunks_exact(8).map(|c| V::from_f64(f64::from_le_bytes(c.try_into().expect("8")))),
+        );
     }
 }
 
