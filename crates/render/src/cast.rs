@@ -7,11 +7,12 @@
 //!
 //! A ray is `stride` values, `stride` 6 or 8: origin x, y, z, direction x, y, z, and with 8,
 //! `t_min` and `t_max` (only hits with `t_min <= t <= t_max` count; with 6, `0 < t`). Values
-//! come as `f32` or `f64` and are rounded to the kernel's precision (once: [`files`] reads
-//! a file's rays straight into the kernel's precision, so that the trace reads no more bytes
-//! per ray than it traces, and [`kernel_ray`] rounds the same way). A ray with a NaN or infinite
-//! origin or direction component after that rounding (a finite `f64` can overflow `f32`), a
-//! zero direction, or a NaN `t_min` or `t_max`, is a miss ([`kernel_ray`]).
+//! come as `f32` or `f64` and are rounded to the kernel's precision once ([`files`] reads a
+//! file's rays straight into the kernel's precision, so that the trace reads no more bytes
+//! per ray than the kernel takes, and [`kernel_ray`] rounds the same way). A ray with a NaN
+//! or infinite origin or direction component after that rounding (a finite `f64` can
+//! overflow `f32`), a zero direction, or a NaN `t_min` or `t_max`, is a miss
+//! ([`kernel_ray`]).
 //!
 //! # Rows
 //!
@@ -70,8 +71,8 @@ pub const MISS: [f64; 10] = {
 pub type Segment<T> = (Ray<T>, T, T);
 
 /// The ray `r` (`stride` values in `f32` or `f64`, see the [module documentation](self)) in
-/// precision `T`
-/// with its segment `t_min, t_max`, or `None` for a ray that is a miss by definition.
+/// precision `T` with its segment `t_min, t_max`, or `None` for a ray that is a miss by
+/// definition.
 ///
 /// # Panics
 ///
