@@ -712,8 +712,8 @@ fn threads_zero_is_one_per_core_and_nothing_is_drawn_off_a_terminal() {
 /// `raycast` reads a file's rays straight into the kernel's precision; the library's
 /// `cast::trace_rays` (the Python module's path) takes `f64` values and rounds each ray as it
 /// traces it. Both must give the same rows, bit for bit: rays whose values round in `f32`,
-/// rays finite in `f64` but not in `f32`, NaN bounds, zero directions, every back end family
-/// and both precisions, with and without bounds.
+/// rays finite in `f64` but not in `f32`, NaN bounds, zero directions, every back end of the
+/// registry and both precisions, with and without bounds.
 #[test]
 fn raycast_reads_rays_rounded_as_the_library_rounds_them() {
     struct Library<'a> {
@@ -774,16 +774,17 @@ fn raycast_reads_rays_rounded_as_the_library_rounds_them() {
         let mut bytes = Vec::new();
         npy::write(&mut bytes, &[rays.len(), stride], values.iter().copied()).unwrap();
         std::fs::write(&rays_path, bytes).unwrap();
-        for backend in ["la", "g3-watertight", "pga-mt", "cga-plucker"] {
-            for precision in ["f32", "f64"] {
+        for backend in backends::Backend::ALL {
+            for precision in backends::Precision::ALL {
+                let (name, digits) = (backend.name(), precision.name());
                 let args: [&dyn AsRef<std::ffi::OsStr>; 10] = [
                     &obj,
                     &rays_path,
                     &out,
                     &"--backend",
-                    &backend,
+                    &name,
                     &"--precision",
-                    &precision,
+                    &digits,
                     &"--with",
                     &"point,normal",
                     &"-q",
@@ -791,15 +792,11 @@ fn raycast_reads_rays_rounded_as_the_library_rounds_them() {
                 ok(&raycast(&args));
                 let got = npy::read_f64_matrix(&std::fs::read(&out).unwrap(), 10).unwrap();
                 let job = Library { mesh: &mesh, rays: &values, stride };
-                let want = backends::dispatch(
-                    backends::Backend::from_name(backend).unwrap(),
-                    backends::Precision::from_name(precision).unwrap(),
-                    job,
-                );
+                let want = backends::dispatch(backend, precision, job);
                 let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-                assert_eq!(bits(&got.values), bits(&want), "{backend} {precision} stride {stride}");
+                assert_eq!(bits(&got.values), bits(&want), "{name} {digits} stride {stride}");
                 let hits = want.chunks_exact(10).filter(|r| r[1] >= 0.0).count();
-                assert!(hits > 50, "{backend} {precision}: only {hits} hits");
+                assert!(hits > 50, "{name} {digits}: only {hits} hits");
             }
         }
     }
