@@ -43,7 +43,7 @@ pub const PACKET: usize = 64;
 pub const MIN_PACKET: usize = 4;
 
 /// The rays of one packet (one octant of one chunk) in the lane precision `S`, structure of
-/// arrays; lanes past `len` are dead.
+/// arrays; lanes past `len` are dead (copies of the first ray, never live).
 struct Group<S> {
     len: usize,
     /// The ray's position in the caller's slice.
@@ -66,7 +66,8 @@ struct Group<S> {
 
 impl<S: Lane + From<f32>> Group<S> {
     /// The packet of the rays `start + members` (positions in `rays`, all finite, all in
-    /// `octant`), with their limits.
+    /// `octant`), with their limits. Lanes past the members repeat the first ray, so that
+    /// every loop over the lanes runs on whole vectors and the extremes need no count.
     fn new<T: Real>(
         rays: &[Ray<T>],
         start: usize,
@@ -74,13 +75,14 @@ impl<S: Lane + From<f32>> Group<S> {
         octant: usize,
         limits: &[T],
     ) -> Self {
+        let len = members.len();
         let mut g = Group {
-            len: members.len(),
+            len,
             index: [0; PACKET],
             origin: [[S::ZERO; PACKET]; 3],
             inv: [[S::ZERO; PACKET]; 3],
             limit: [S::ZERO; PACKET],
-            live: 0,
+            live: u64::MAX >> (PACKET - len),
             near: [0; 3],
             far: [0; 3],
             o_near: [S::ZERO; 3],
@@ -88,24 +90,26 @@ impl<S: Lane + From<f32>> Group<S> {
             i_small: [S::ZERO; 3],
             i_big: [S::ZERO; 3],
         };
-        for (r, &m) in members.iter().enumerate() {
-            let i = start + usize::from(m);
+        for r in 0..PACKET {
+            let i = start + usize::from(members[if r < len { r } else { 0 }]);
             let ray = &rays[i];
             g.index[r] = i;
             for k in 0..3 {
                 g.origin[k][r] = to_lane(ray.origin[k]);
-                // As `traverse::Prepared` computes it: the inverse in the ray's precision.
-                g.inv[k][r] = to_lane(T::ONE / ray.dir[k]);
+                g.inv[k][r] = to_lane(ray.dir[k]);
             }
-            g.limit[r] = to_lane(limits[i]);
-            g.live |= 1 << r;
+            // Lanes past the members are never live (see `max_limit`).
+            g.limit[r] = if r < len { to_lane(limits[i]) } else { S::from(f32::NEG_INFINITY) };
         }
+        // As `traverse::Prepared` computes it, `1 / d` in the ray's precision: the lanes have
+        // that precision, so this is the same division, a vector at a time.
+        let one = S::from(1.0);
+        g.inv.iter_mut().flatten().for_each(|x| *x = one / *x);
         for k in 0..3 {
             let negative = octant >> k & 1 == 1;
             (g.near[k], g.far[k]) = if negative { (k + 3, k) } else { (k, k + 3) };
-            let (o, inv) = (&g.origin[k][..g.len], &g.inv[k][..g.len]);
-            let (o_min, o_max) = extremes(o);
-            let (i_min, i_max) = extremes(inv);
+            let (o_min, o_max) = extremes(&g.origin[k]);
+            let (i_min, i_max) = extremes(&g.inv[k]);
             // Positive: enter through the lower plane, least entry from the largest origin.
             (g.o_near[k], g.o_far[k]) = if negative { (o_min, o_max) } else { (o_max, o_min) };
             (g.i_small[k], g.i_big[k]) = if negative { (i_max, i_min) } else { (i_min, i_max) };
@@ -129,15 +133,24 @@ impl<S: Lane + From<f32>> Group<S> {
     }
 
     /// The largest limit of the live rays (NaN limits ignored: such a ray meets nothing).
+    /// Rays that are not live hold `-inf` (see [`Group::retire`]), so this is the largest of
+    /// all lanes: eight running maxima, whole vectors, no chain through the live mask.
     #[inline(always)]
     fn max_limit(&self) -> S {
-        let mut m = S::from(f32::NEG_INFINITY);
-        let mut live = self.live;
-        while live != 0 {
-            m = max_or(m, self.limit[live.trailing_zeros() as usize]);
-            live &= live - 1;
+        let mut m = [S::from(f32::NEG_INFINITY); 8];
+        for chunk in self.limit.chunks_exact(8) {
+            for j in 0..8 {
+                m[j] = max_or(m[j], chunk[j]);
+            }
         }
-        m
+        m.into_iter().fold(m[0], max_or)
+    }
+
+    /// Ray `r` is done: no longer live, and its limit no longer counts in the packet's.
+    #[inline(always)]
+    fn retire(&mut self, r: usize) {
+        self.live &= !(1 << r);
+        self.limit[r] = S::from(f32::NEG_INFINITY);
     }
 
     /// The packet's interval test of the eight boxes of `node` within `(0, limit]`: bit `i`
@@ -197,10 +210,18 @@ impl<S: Lane + From<f32>> Group<S> {
     }
 }
 
-/// The least and greatest of `xs` (not empty, no NaN).
+/// The least and greatest of `xs` (no NaN): eight running extremes, one vector of `f32`,
+/// then the extremes of those (without NaN the order of the comparisons changes nothing).
 #[inline(always)]
-fn extremes<S: Lane>(xs: &[S]) -> (S, S) {
-    xs.iter().fold((xs[0], xs[0]), |(lo, hi), &x| (min_or(lo, x), max_or(hi, x)))
+fn extremes<S: Lane>(xs: &[S; PACKET]) -> (S, S) {
+    let (mut lo, mut hi) = ([xs[0]; 8], [xs[0]; 8]);
+    for chunk in xs.chunks_exact(8) {
+        for j in 0..8 {
+            lo[j] = min_or(lo[j], chunk[j]);
+            hi[j] = max_or(hi[j], chunk[j]);
+        }
+    }
+    (lo.into_iter().fold(lo[0], min_or), hi.into_iter().fold(hi[0], max_or))
 }
 
 /// Converts the tree's precision to the lane type (exact: they are the same precision).
@@ -431,7 +452,7 @@ fn any_group<S, F>(
                 rays &= rays - 1;
                 if leaf(slots.clone(), g.index[r]) {
                     hit[g.index[r]] = true;
-                    g.live &= !(1 << r);
+                    g.retire(r);
                 }
             }
             if g.live == 0 {

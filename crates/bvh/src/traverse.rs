@@ -16,7 +16,7 @@
 //! not: see `results/README.md`.)
 
 use core::mem::MaybeUninit;
-use core::ops::{Mul, Range, Sub};
+use core::ops::{Div, Mul, Range, Sub};
 
 use intersect::{Ray, Real};
 
@@ -36,7 +36,9 @@ const fn ize_factor(eps: f64) -> f64 {
 }
 
 /// The distance type of a traversal: `f32` or `f64`, the ray's precision.
-pub trait Lane: Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> {
+pub trait Lane:
+    Copy + PartialOrd + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
     /// 0.
     const ZERO: Self;
     /// [`ize_factor`] rounded up to this precision (rounding may lose half an ulp; one more
