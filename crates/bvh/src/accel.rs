@@ -57,9 +57,6 @@ use crate::traverse::{AnyLeaf, ClosestLeaf};
 /// Rays per batch of the packet queries (a multiple of [`crate::PACKET`]: a 16 x 16 tile).
 const BATCH: usize = 256;
 
-/// Rays of a packet handed to [`Intersector::intersect_group`] together at a leaf.
-const GROUP: usize = 16;
-
 /// Scenes with at least this many triangles prepare them in parallel.
 const PARALLEL_PREPARE: usize = 16384;
 
@@ -297,60 +294,46 @@ impl<I: Intersector> Accel<I> {
         out: &mut [Option<Hit<I::Real>>],
     ) {
         assert_eq!(rays.len(), out.len(), "one answer per ray");
+        let Some(first) = rays.first() else { return };
+        // Each ray's prepared data at its position in the batch, so that a leaf hands the
+        // kernel the positions of its rays rather than copies of them; slots are filled with
+        // a copy of the first ray's until their own ray is prepared (`ready`).
+        let mut data = vec![self.intersector.prepare_ray(first); BATCH.min(rays.len())];
         // In batches whose per-ray state stays in the cache, however many rays come at once.
         for (rays, out) in rays.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
             out.fill(None);
             // Prepared when a ray first reaches a leaf (the same bits as up front): most rays
             // of a frame where the mesh is small never do.
-            let mut data: [Option<I::RayData>; BATCH] = [None; BATCH];
+            let mut ready = [0u64; BATCH / 64];
             let mut limits = [t_max; BATCH];
             let limits = &mut limits[..rays.len()];
             self.bvh.closest_packet(rays, limits, |slots, members, limits| {
-                let (first, order) = (slots.start, self.bvh.order());
-                let prims = &self.prims[slots];
-                for group in members.chunks(GROUP) {
-                    let (group_rays, group_data) = self.gather(rays, &mut data, group);
-                    let at = |j: usize| group[j.min(group.len() - 1)];
-                    let mut group_limits: [I::Real; GROUP] =
-                        core::array::from_fn(|j| limits[at(j)]);
-                    let n = group.len();
-                    self.intersector.intersect_group(
-                        prims,
-                        &group_rays[..n],
-                        &group_data[..n],
-                        &mut group_limits[..n],
-                        &mut |r, k, h, limit| {
-                            // As `closest_in_leaf` keeps the nearest hit of one ray.
-                            let hit = Hit::new(order[first + k], h);
-                            let best = &mut out[group[r]];
-                            if best.is_none_or(|b| hit.nearer_than(&b)) {
-                                *best = Some(hit);
-                                *limit = hit.t;
-                            }
-                        },
-                    );
-                    for (&i, &l) in group.iter().zip(&group_limits) {
-                        limits[i] = l;
+                for &i in members {
+                    if ready[i / 64] >> (i % 64) & 1 == 0 {
+                        ready[i / 64] |= 1 << (i % 64);
+                        data[i] = self.intersector.prepare_ray(&rays[i]);
                     }
                 }
+                let (first, order) = (slots.start, self.bvh.order());
+                let prims = &self.prims[slots];
+                self.intersector.intersect_group(
+                    prims,
+                    rays,
+                    &data,
+                    members,
+                    limits,
+                    &mut |r, k, h, limit| {
+                        // As `closest_in_leaf` keeps the nearest hit of one ray.
+                        let hit = Hit::new(order[first + k], h);
+                        let best = &mut out[r];
+                        if best.is_none_or(|b| hit.nearer_than(&b)) {
+                            *best = Some(hit);
+                            *limit = hit.t;
+                        }
+                    },
+                );
             });
         }
-    }
-
-    /// The rays `group` (positions in `rays`, at most [`GROUP`]) and their prepared data in
-    /// contiguous arrays, preparing those not prepared yet; short groups are padded with
-    /// their last ray, whose copies are not handed over.
-    #[inline(always)]
-    fn gather(
-        &self,
-        rays: &[Ray<I::Real>],
-        data: &mut [Option<I::RayData>; BATCH],
-        group: &[usize],
-    ) -> ([Ray<I::Real>; GROUP], [I::RayData; GROUP]) {
-        let at = |j: usize| group[j.min(group.len() - 1)];
-        let mut prepared =
-            |i: usize| *data[i].get_or_insert_with(|| self.intersector.prepare_ray(&rays[i]));
-        (core::array::from_fn(|j| rays[at(j)]), core::array::from_fn(|j| prepared(at(j))))
     }
 
     /// [`Accel::any_hit`] for every ray of `rays` with the same `t_max`, into `out`: the same

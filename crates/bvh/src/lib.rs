@@ -75,7 +75,7 @@
 //! axis), which is conservative for every ray's own rounded box test; at a leaf each ray runs
 //! the single-ray box test, and the rays that pass meet the leaf's triangles together (for
 //! closest hits through [`intersect::Intersector::intersect_group`], which a kernel may run
-//! several rays at a time, in groups of up to 16 of one leaf visit). The hits are
+//! several rays at a time, handed the positions of the rays, not copies). The hits are
 //! those of single rays, ties included (the `packet` module's docs give the argument; the
 //! tests check it on every back end). Coherent rays (a block of pixels from one eye) share
 //! most of their nodes, so the packet pays one node test where single rays pay one each;

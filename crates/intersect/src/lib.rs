@@ -413,11 +413,14 @@ pub trait Intersector: Sync + Send {
         false
     }
 
-    /// [`Intersector::intersect`] of each of `prims` in turn with each ray of a group: ray `r`
-    /// is `rays[r]`, prepared as `data[r]`, searching within `limits[r]`. For every hit,
+    /// [`Intersector::intersect`] of each of `prims` in turn with each ray of a group: the
+    /// rays at the distinct positions `members` of `rays`, ray `r` prepared as `data[r]` and
+    /// searching within `limits[r]` (the positions index all three, so that a caller hands
+    /// over a subset of its rays without copying them). For every hit,
     /// `found(r, k, hit, &mut limits[r])`, `k` the triangle's position in `prims`; `found` may
     /// lower the limit before the ray meets the next triangle. Each ray sees exactly the calls
-    /// of its own loop over `prims`, in order, so every hit is the one `intersect` reports.
+    /// of its own loop over `prims`, in order, so every hit is the one `intersect` reports;
+    /// rays not in `members` see none.
     ///
     /// The default is that loop. A kernel may override it to test several rays at once (the
     /// leaf stage of the BVH's packet traversal), with the same hits bit for bit, ties and
@@ -428,12 +431,13 @@ pub trait Intersector: Sync + Send {
         prims: &[Self::Prim],
         rays: &[Ray<Self::Real>],
         data: &[Self::RayData],
+        members: &[usize],
         limits: &mut [Self::Real],
         found: &mut F,
     ) where
         F: FnMut(usize, usize, TriangleHit<Self::Real>, &mut Self::Real),
     {
-        one_ray_at_a_time(self, prims, rays, data, limits, found);
+        one_ray_at_a_time(self, prims, rays, data, members, limits, found);
     }
 
     /// Whether `ray` hits the triangle with `0 < t <= t_max` (any-hit queries, shadows,
@@ -458,6 +462,7 @@ pub fn one_ray_at_a_time<I, F>(
     prims: &[I::Prim],
     rays: &[Ray<I::Real>],
     data: &[I::RayData],
+    members: &[usize],
     limits: &mut [I::Real],
     found: &mut F,
 ) where
@@ -465,8 +470,8 @@ pub fn one_ray_at_a_time<I, F>(
     F: FnMut(usize, usize, TriangleHit<I::Real>, &mut I::Real),
 {
     for (k, prim) in prims.iter().enumerate() {
-        for (r, (ray, data)) in rays.iter().zip(data).enumerate() {
-            if let Some(hit) = kernel.intersect(prim, ray, data, limits[r]) {
+        for &r in members {
+            if let Some(hit) = kernel.intersect(prim, &rays[r], &data[r], limits[r]) {
                 found(r, k, hit, &mut limits[r]);
             }
         }

@@ -312,33 +312,33 @@ impl<T: GlamReal> Intersector for Watertight<T> {
         prims: &[WatertightPrim<T>],
         rays: &[Ray<T>],
         data: &[WatertightRay<T>],
+        members: &[usize],
         limits: &mut [T],
         found: &mut F,
     ) where
         F: FnMut(usize, usize, TriangleHit<T>, &mut T),
     {
-        if rays.len() < 2 {
-            return intersect::one_ray_at_a_time(self, prims, rays, data, limits, found);
+        if members.len() < 2 {
+            return intersect::one_ray_at_a_time(self, prims, rays, data, members, limits, found);
         }
-        // At most 64 rays at a time: a mask of 64 bits holds the rays still to place.
-        for start in (0..rays.len()).step_by(64) {
-            let end = (start + 64).min(rays.len());
-            let mut left: u64 = if end - start == 64 { u64::MAX } else { (1 << (end - start)) - 1 };
+        // At most 64 members at a time: a mask of 64 bits holds those still to place.
+        for chunk in members.chunks(64) {
+            let mut left: u64 = u64::MAX >> (64 - chunk.len());
             while left != 0 {
-                let k = data[start + left.trailing_zeros() as usize].k;
-                let mut members = [0; LANES];
+                let k = data[chunk[left.trailing_zeros() as usize]].k;
+                let mut block = [0; LANES];
                 let mut n = 0;
                 let mut scan = left;
                 while scan != 0 && n < LANES {
-                    let r = scan.trailing_zeros() as usize;
+                    let m = scan.trailing_zeros() as usize;
                     scan &= scan - 1;
-                    if data[start + r].k == k {
-                        members[n] = start + r;
+                    if data[chunk[m]].k == k {
+                        block[n] = chunk[m];
                         n += 1;
-                        left &= !(1 << r);
+                        left &= !(1 << m);
                     }
                 }
-                let block = Rays::new(data, members, n);
+                let block = Rays::new(data, block, n);
                 self.rays(&block, k, prims, rays, data, limits, found);
             }
         }
