@@ -308,12 +308,7 @@ impl<I: Intersector> Accel<I> {
             let mut limits = [t_max; BATCH];
             let limits = &mut limits[..rays.len()];
             self.bvh.closest_packet(rays, limits, |slots, members, limits| {
-                for &i in members {
-                    if ready[i / 64] >> (i % 64) & 1 == 0 {
-                        ready[i / 64] |= 1 << (i % 64);
-                        data[i] = self.intersector.prepare_ray(&rays[i]);
-                    }
-                }
+                self.prepare_members(rays, members, &mut data, &mut ready);
                 let (first, order) = (slots.start, self.bvh.order());
                 let prims = &self.prims[slots];
                 self.intersector.intersect_group(
@@ -345,16 +340,41 @@ impl<I: Intersector> Accel<I> {
     /// If `rays` and `out` differ in length.
     pub fn any_hits_packet(&self, rays: &[Ray<I::Real>], t_max: I::Real, out: &mut [bool]) {
         assert_eq!(rays.len(), out.len(), "one answer per ray");
-        // In batches, prepared lazily, as in `closest_hits_packet`.
-        let limits = [t_max; BATCH];
+        let Some(first) = rays.first() else { return };
+        // Prepared lazily and in place, as in `closest_hits_packet`.
+        let mut data = vec![self.intersector.prepare_ray(first); BATCH.min(rays.len())];
+        let bounds = [t_max; BATCH];
         for (rays, out) in rays.chunks(BATCH).zip(out.chunks_mut(BATCH)) {
-            let mut data: [Option<I::RayData>; BATCH] = [None; BATCH];
-            self.bvh.any_packet(rays, &limits[..rays.len()], out, |slots, i| {
-                let ray = &rays[i];
-                let data = *data[i].get_or_insert_with(|| self.intersector.prepare_ray(ray));
+            let mut ready = [0u64; BATCH / 64];
+            self.bvh.any_packet(rays, &bounds[..rays.len()], out, |slots, members| {
+                self.prepare_members(rays, members, &mut data, &mut ready);
                 let (prims, blocks) = self.leaf(slots);
-                self.intersector.occludes_leaf(prims, blocks, ray, &data, t_max)
+                let mut found = 0u64;
+                for (j, &i) in members.iter().enumerate() {
+                    let hit =
+                        self.intersector.occludes_leaf(prims, blocks, &rays[i], &data[i], t_max);
+                    found |= u64::from(hit) << j;
+                }
+                found
             });
+        }
+    }
+
+    /// Prepares the rays `members` of a batch that are not prepared yet (`ready`), into their
+    /// slots of `data`.
+    #[inline(always)]
+    fn prepare_members(
+        &self,
+        rays: &[Ray<I::Real>],
+        members: &[usize],
+        data: &mut [I::RayData],
+        ready: &mut [u64; BATCH / 64],
+    ) {
+        for &i in members {
+            if ready[i / 64] >> (i % 64) & 1 == 0 {
+                ready[i / 64] |= 1 << (i % 64);
+                data[i] = self.intersector.prepare_ray(&rays[i]);
+            }
         }
     }
 

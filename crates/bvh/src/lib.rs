@@ -494,8 +494,9 @@ impl<T: Real> Bvh<T> {
     }
 
     /// [`Bvh::any`] for many rays at once, in packets as [`Bvh::closest_packet`]: `leaf` gets
-    /// a range of slots and a ray's position, and returns whether that ray hit there (the ray
-    /// then stops); `hit[i]` says on return whether `leaf` returned `true` for ray `i` within
+    /// a range of slots and the positions of the rays that reach it (ascending, at most
+    /// [`PACKET`]), and returns which of them hit there (bit `j` for the `j`-th; those rays
+    /// then stop); `hit[i]` says on return whether `leaf` reported a hit for ray `i` within
     /// `(0, limits[i]]`.
     ///
     /// # Panics
@@ -503,7 +504,7 @@ impl<T: Real> Bvh<T> {
     /// If `rays`, `limits` and `hit` differ in length.
     pub fn any_packet<F>(&self, rays: &[Ray<T>], limits: &[T], hit: &mut [bool], leaf: F)
     where
-        F: FnMut(Range<usize>, usize) -> bool,
+        F: FnMut(Range<usize>, &[usize]) -> u64,
     {
         if T::MANTISSA_DIGITS <= f32::MANTISSA_DIGITS {
             packet::any::<f32, T, F>(&self.nodes, rays, limits, hit, leaf);

@@ -402,7 +402,7 @@ pub fn any<S, T, F>(nodes: &[Node], rays: &[Ray<T>], limits: &[T], hit: &mut [bo
 where
     S: Lane + From<f32>,
     T: Real,
-    F: FnMut(Range<usize>, usize) -> bool,
+    F: FnMut(Range<usize>, &[usize]) -> u64,
 {
     assert_eq!(rays.len(), limits.len(), "one limit per ray");
     assert_eq!(rays.len(), hit.len(), "one answer per ray");
@@ -422,7 +422,7 @@ where
                 nodes,
                 &rays[i],
                 limits[i],
-                |slots: Range<usize>| leaf(slots, i),
+                |slots: Range<usize>| leaf(slots, &[i]) != 0,
             );
         }
     });
@@ -437,7 +437,7 @@ fn any_group<S, F>(
     leaf: &mut F,
 ) where
     S: Lane + From<f32>,
-    F: FnMut(Range<usize>, usize) -> bool,
+    F: FnMut(Range<usize>, &[usize]) -> u64,
 {
     stack.clear();
     let mut limit = g.max_limit();
@@ -445,21 +445,23 @@ fn any_group<S, F>(
     let mut current = 0u32;
     loop {
         if is_leaf(current) {
-            let (slots, mut rays) = g.leaf_at(nodes, current);
-            let retired = rays != 0;
-            while rays != 0 {
-                let r = rays.trailing_zeros() as usize;
-                rays &= rays - 1;
-                if leaf(slots.clone(), g.index[r]) {
-                    hit[g.index[r]] = true;
-                    g.retire(r);
+            let (slots, rays) = g.leaf_at(nodes, current);
+            if rays != 0 {
+                // The rays that reach the leaf, handed over together, as for closest hits.
+                let (lanes, members, n) = g.members(rays);
+                let mut found = leaf(slots, &members[..n]);
+                if found != 0 {
+                    while found != 0 {
+                        let j = found.trailing_zeros() as usize;
+                        found &= found - 1;
+                        hit[members[j]] = true;
+                        g.retire(lanes[j]);
+                    }
+                    if g.live == 0 {
+                        return;
+                    }
+                    limit = g.max_limit();
                 }
-            }
-            if g.live == 0 {
-                return;
-            }
-            if retired {
-                limit = g.max_limit();
             }
         } else {
             let node = &nodes[current as usize];
