@@ -305,11 +305,12 @@ fn sorted<S: Lane>(mask: u32, t: &[S; WIDTH], out: &mut [usize; WIDTH]) -> usize
 }
 
 /// See [`super::Bvh::closest_packet`].
-pub fn closest<S, T, F>(nodes: &[Node], rays: &[Ray<T>], limits: &mut [T], mut leaf: F)
+pub fn closest<S, T, F, H>(nodes: &[Node], rays: &[Ray<T>], limits: &mut [T], mut leaf: F, hint: H)
 where
     S: Lane + From<f32>,
     T: Real,
     F: FnMut(Range<usize>, &[usize], &mut [T]),
+    H: Fn(Range<usize>),
 {
     assert_eq!(rays.len(), limits.len(), "one limit per ray");
     if nodes.is_empty() {
@@ -319,7 +320,7 @@ where
     groups(rays, |work| match work {
         Work::Packet(start, members, octant) => {
             let mut g = Group::<S>::new(rays, start, members, octant, limits);
-            closest_group(nodes, &mut g, &mut stack, limits, &mut leaf);
+            closest_group(nodes, &mut g, &mut stack, limits, &mut leaf, &hint);
         }
         Work::Single(i) => {
             traverse::closest::<S, T, _>(
@@ -337,16 +338,18 @@ where
 }
 
 #[inline(always)]
-fn closest_group<S, T, F>(
+fn closest_group<S, T, F, H>(
     nodes: &[Node],
     g: &mut Group<S>,
     stack: &mut Vec<(u32, S)>,
     limits: &mut [T],
     leaf: &mut F,
+    hint: &H,
 ) where
     S: Lane + From<f32>,
     T: Real,
     F: FnMut(Range<usize>, &[usize], &mut [T]),
+    H: Fn(Range<usize>),
 {
     stack.clear();
     let mut limit = g.max_limit();
@@ -378,6 +381,11 @@ fn closest_group<S, T, F>(
             let mask = g.hits(node, limit, &mut t);
             if mask != 0 {
                 let n = sorted(mask, &t, &mut order);
+                for &i in &order[..n] {
+                    if is_leaf(node.refs[i]) {
+                        hint(leaf_slots(node.refs[i]));
+                    }
+                }
                 for &i in order[1..n].iter().rev() {
                     stack.push((target(current as usize, i, node.refs[i]), t[i]));
                 }
@@ -398,11 +406,18 @@ fn closest_group<S, T, F>(
 }
 
 /// See [`super::Bvh::any_packet`].
-pub fn any<S, T, F>(nodes: &[Node], rays: &[Ray<T>], limits: &[T], hit: &mut [bool], mut leaf: F)
-where
+pub fn any<S, T, F, H>(
+    nodes: &[Node],
+    rays: &[Ray<T>],
+    limits: &[T],
+    hit: &mut [bool],
+    mut leaf: F,
+    hint: H,
+) where
     S: Lane + From<f32>,
     T: Real,
     F: FnMut(Range<usize>, &[usize]) -> u64,
+    H: Fn(Range<usize>),
 {
     assert_eq!(rays.len(), limits.len(), "one limit per ray");
     assert_eq!(rays.len(), hit.len(), "one answer per ray");
@@ -414,7 +429,7 @@ where
     groups(rays, |work| match work {
         Work::Packet(start, members, octant) => {
             let mut g = Group::<S>::new(rays, start, members, octant, limits);
-            any_group(nodes, &mut g, &mut stack, hit, &mut leaf);
+            any_group(nodes, &mut g, &mut stack, hit, &mut leaf, &hint);
         }
         Work::Single(i) => {
             hit[i] = traverse::any::<S, T, _>(
@@ -429,15 +444,17 @@ where
 }
 
 #[inline(always)]
-fn any_group<S, F>(
+fn any_group<S, F, H>(
     nodes: &[Node],
     g: &mut Group<S>,
     stack: &mut Vec<u32>,
     hit: &mut [bool],
     leaf: &mut F,
+    hint: &H,
 ) where
     S: Lane + From<f32>,
     F: FnMut(Range<usize>, &[usize]) -> u64,
+    H: Fn(Range<usize>),
 {
     stack.clear();
     let mut limit = g.max_limit();
@@ -466,6 +483,14 @@ fn any_group<S, F>(
         } else {
             let node = &nodes[current as usize];
             let mut mask = g.hits(node, limit, &mut t);
+            let mut leaves = mask;
+            while leaves != 0 {
+                let i = leaves.trailing_zeros() as usize;
+                leaves &= leaves - 1;
+                if is_leaf(node.refs[i]) {
+                    hint(leaf_slots(node.refs[i]));
+                }
+            }
             if mask != 0 {
                 let here = current as usize;
                 let first = mask.trailing_zeros() as usize;
