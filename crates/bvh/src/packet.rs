@@ -134,16 +134,10 @@ impl<S: Lane + From<f32>> Group<S> {
 
     /// The largest limit of the live rays (NaN limits ignored: such a ray meets nothing).
     /// Rays that are not live hold `-inf` (see [`Group::retire`]), so this is the largest of
-    /// all lanes: eight running maxima, whole vectors, no chain through the live mask.
+    /// all lanes, with no chain through the live mask.
     #[inline(always)]
     fn max_limit(&self) -> S {
-        let mut m = [S::from(f32::NEG_INFINITY); 8];
-        for chunk in self.limit.chunks_exact(8) {
-            for j in 0..8 {
-                m[j] = max_or(m[j], chunk[j]);
-            }
-        }
-        m.into_iter().fold(m[0], max_or)
+        fold8(&self.limit, S::from(f32::NEG_INFINITY), max_or)
     }
 
     /// Ray `r` is done: no longer live, and its limit no longer counts in the packet's.
@@ -210,18 +204,24 @@ impl<S: Lane + From<f32>> Group<S> {
     }
 }
 
-/// The least and greatest of `xs` (no NaN): eight running extremes, one vector of `f32`,
-/// then the extremes of those (without NaN the order of the comparisons changes nothing).
+/// The least and greatest of `xs` (no NaN: then the order of the comparisons changes
+/// nothing).
 #[inline(always)]
 fn extremes<S: Lane>(xs: &[S; PACKET]) -> (S, S) {
-    let (mut lo, mut hi) = ([xs[0]; 8], [xs[0]; 8]);
+    (fold8(xs, xs[0], min_or), fold8(xs, xs[0], max_or))
+}
+
+/// `f` (`min_or` or `max_or`) over `xs` from `init` as eight running results, one vector of
+/// `f32`, then over those: whole vectors, no chain through every lane.
+#[inline(always)]
+fn fold8<S: Lane>(xs: &[S; PACKET], init: S, f: impl Fn(S, S) -> S + Copy) -> S {
+    let mut acc = [init; 8];
     for chunk in xs.chunks_exact(8) {
         for j in 0..8 {
-            lo[j] = min_or(lo[j], chunk[j]);
-            hi[j] = max_or(hi[j], chunk[j]);
+            acc[j] = f(acc[j], chunk[j]);
         }
     }
-    (lo.into_iter().fold(lo[0], min_or), hi.into_iter().fold(hi[0], max_or))
+    acc.into_iter().fold(init, f)
 }
 
 /// Converts the tree's precision to the lane type (exact: they are the same precision).
