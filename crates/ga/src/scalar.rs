@@ -16,6 +16,9 @@ mod sealed {
         fn map_down(columns: &[[Self; 4]; 4], offset: [Self; 4], p: [Self; 4]) -> [Self; 3];
         /// The geometric product of two R(3,0,1) multivectors, coefficients in basis order.
         fn pga_geometric(a: &[Self; 16], b: &[Self; 16]) -> [Self; 16];
+        /// The product of two R(3,0,1) motors, coefficients in storage order, where this
+        /// precision has a kernel of its own (else the dual-quaternion form of `pga::geometric`).
+        fn pga_motor_product(a: &[Self; 8], b: &[Self; 8]) -> Option<[Self; 8]>;
         /// The geometric product of two R(4,1) multivectors, coefficients in basis order.
         fn cga_geometric(a: &[Self; 32], b: &[Self; 32]) -> [Self; 32];
     }
@@ -85,6 +88,13 @@ impl sealed::Kernels for f32 {
         )
     }
     #[inline]
+    fn pga_motor_product(a: &[f32; 8], b: &[f32; 8]) -> Option<[f32; 8]> {
+        with_simd!(Some(crate::pga::simd::motor_product_f32(a, b)), {
+            let _ = (a, b);
+            None
+        })
+    }
+    #[inline]
     fn cga_geometric(a: &[f32; 32], b: &[f32; 32]) -> [f32; 32] {
         with_simd!(
             crate::cga::generated::lanes::geometric_f32(a, b),
@@ -124,6 +134,13 @@ impl sealed::Kernels for f64 {
             crate::pga::generated::lanes::geometric_f64(a, b),
             crate::pga::geometric::blockwise(a, b)
         )
+    }
+    #[inline]
+    fn pga_motor_product(a: &[f64; 8], b: &[f64; 8]) -> Option<[f64; 8]> {
+        with_simd!(Some(crate::pga::simd::motor_product_f64(a, b)), {
+            let _ = (a, b);
+            None
+        })
     }
     #[inline]
     fn cga_geometric(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
