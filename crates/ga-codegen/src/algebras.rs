@@ -112,11 +112,13 @@ fn pga() -> AlgebraSpec {
         regressive: Regressive::Complement,
         dual: Dual::Complement,
         emit_types: true,
-        // Built from G3's kernels by hand (`pga/geometric.rs`); the generated scalar forms
-        // become `pub(crate)` functions they are checked against.
+        // Written by hand (`pga/geometric.rs`, `pga/meet.rs`) for the vector units; the
+        // generated scalar forms become `pub(crate)` functions they are checked against (and
+        // the portable builds' kernels where no other is written).
         hand_written: &[
             ("geometric", "Motor", "Motor"),
             ("geometric", "Multivector", "Multivector"),
+            ("outer", "Line", "Plane"),
         ],
         lanes: true,
         versors: &["Plane", "Line", "Point", "Motor", "Rotor", "Translator"],

@@ -386,6 +386,7 @@ impl Resolved<'_> {
                              {expr}\n}}\n\n"
                         )
                         .expect("writing to a String");
+                        impls.push(Impl { product: p.key, left: ta, right: tb, result: ty });
                         continue;
                     }
                     if !traits.contains(&p.trait_name) {
@@ -785,12 +786,6 @@ fn result_types(alg: &Resolved<'_>, impls: &[Impl]) -> String {
         PRODUCTS.iter().map(|p| (p.key, format!("{} `a {} b`", p.doc, p.symbol))).collect();
     products.push(("sandwich", "Sandwich `a.sandwich(b)` (`a b ã`)".to_owned()));
     for (key, title) in products {
-        let hand = |a: usize, b: usize| {
-            alg.spec
-                .hand_written
-                .iter()
-                .any(|&(p, x, y)| p == key && x == names[a] && y == names[b])
-        };
         let rows: Vec<usize> = (0..names.len())
             .filter(|&a| key != "sandwich" || alg.spec.versors.contains(&names[a]))
             .collect();
@@ -809,10 +804,6 @@ fn result_types(alg: &Resolved<'_>, impls: &[Impl]) -> String {
             let cells: Vec<String> = cols
                 .iter()
                 .map(|&b| {
-                    if hand(a, b) {
-                        // Hand-written beside a SIMD kernel; the result is the operand type.
-                        return names[b].to_owned();
-                    }
                     impls
                         .iter()
                         .find(|i| i.product == key && i.left == a && i.right == b)
@@ -828,7 +819,7 @@ fn result_types(alg: &Resolved<'_>, impls: &[Impl]) -> String {
     out
 }
 
-/// One generated impl.
+/// One product impl: generated, or hand-written beside its generated expansion.
 pub struct Impl {
     /// The product's key (`"sandwich"` for sandwiches).
     pub product: &'static str,

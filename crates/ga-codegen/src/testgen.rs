@@ -267,22 +267,6 @@ pub fn oracle_test(algebras: &[Resolved<'_>], impls: &[Vec<Impl>]) -> String {
                 None => by_product.push((i.product, vec![i])),
             }
         }
-        // The hand-written kernels are checked through their operators too.
-        let hand: Vec<Impl> = alg
-            .spec
-            .hand_written
-            .iter()
-            .map(|&(p, a, b)| {
-                let (ta, tb) = (alg.type_index(a), alg.type_index(b));
-                let product = crate::products::PRODUCTS.iter().find(|x| x.key == p).expect("p").key;
-                Impl { product, left: ta, right: tb, result: Some(tb) }
-            })
-            .collect();
-        for h in &hand {
-            if let Some((_, v)) = by_product.iter_mut().find(|(k, _)| *k == h.product) {
-                v.push(h);
-            }
-        }
         for (product, list) in &by_product {
             writeln!(
                 out,

@@ -19,6 +19,11 @@ mod sealed {
         /// The product of two R(3,0,1) motors, coefficients in storage order, where this
         /// precision has a kernel of its own (else the dual-quaternion form of `pga::geometric`).
         fn pga_motor_product(a: &[Self; 8], b: &[Self; 8]) -> Option<[Self; 8]>;
+        /// `Line ^ Plane` in R(3,0,1), coefficients in storage order, where this precision
+        /// has a kernel of its own (else the generated expansion).
+        fn pga_meet_line_plane(line: &[Self; 6], plane: &[Self; 4]) -> Option<[Self; 4]>;
+        /// `p / p[3]` in the first three lanes (the last is 1 or `p[3] / p[3]`).
+        fn divide_by_last(p: [Self; 4]) -> [Self; 4];
         /// The geometric product of two R(4,1) multivectors, coefficients in basis order.
         fn cga_geometric(a: &[Self; 32], b: &[Self; 32]) -> [Self; 32];
     }
@@ -95,6 +100,20 @@ impl sealed::Kernels for f32 {
         })
     }
     #[inline]
+    fn pga_meet_line_plane(line: &[f32; 6], plane: &[f32; 4]) -> Option<[f32; 4]> {
+        with_simd!(Some(crate::pga::simd::meet_line_plane_f32(line, plane)), {
+            let _ = (line, plane);
+            None
+        })
+    }
+    #[inline]
+    fn divide_by_last(p: [f32; 4]) -> [f32; 4] {
+        with_simd!(
+            crate::pga::simd::divide_by_last_f32(p),
+            [p[0] / p[3], p[1] / p[3], p[2] / p[3], 1.0]
+        )
+    }
+    #[inline]
     fn cga_geometric(a: &[f32; 32], b: &[f32; 32]) -> [f32; 32] {
         with_simd!(
             crate::cga::generated::lanes::geometric_f32(a, b),
@@ -141,6 +160,19 @@ impl sealed::Kernels for f64 {
             let _ = (a, b);
             None
         })
+    }
+    #[inline]
+    fn pga_meet_line_plane(line: &[f64; 6], plane: &[f64; 4]) -> Option<[f64; 4]> {
+        with_simd!(Some(crate::pga::simd::meet_line_plane_f64(line, plane)), {
+            let _ = (line, plane);
+            None
+        })
+    }
+    #[inline]
+    fn divide_by_last(p: [f64; 4]) -> [f64; 4] {
+        // Three scalar divisions: a 4-lane f64 division occupies the divider as long, and
+        // measured slower (results/README.md).
+        [p[0] / p[3], p[1] / p[3], p[2] / p[3], 1.0]
     }
     #[inline]
     fn cga_geometric(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {

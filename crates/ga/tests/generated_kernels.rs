@@ -336,6 +336,12 @@ mod g3 {
             |a, b| a * b,
             |a, b| a.geometric(b),
         );
+        binary::<Rotor<f64>, Rotor<f64>, _>(
+            &basis,
+            "g3 Rotor geometric Rotor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
         binary::<Rotor<f64>, Multivector<f64>, _>(
             &basis,
             "g3 Rotor geometric Multivector",
@@ -369,12 +375,6 @@ mod g3 {
         binary::<Multivector<f64>, Multivector<f64>, _>(
             &basis,
             "g3 Multivector geometric Multivector",
-            |a, b| a * b,
-            |a, b| a.geometric(b),
-        );
-        binary::<Rotor<f64>, Rotor<f64>, _>(
-            &basis,
-            "g3 Rotor geometric Rotor",
             |a, b| a * b,
             |a, b| a.geometric(b),
         );
@@ -1655,6 +1655,12 @@ mod pga {
             |a, b| a * b,
             |a, b| a.geometric(b),
         );
+        binary::<Motor<f64>, Motor<f64>, _>(
+            &basis,
+            "pga Motor geometric Motor",
+            |a, b| a * b,
+            |a, b| a.geometric(b),
+        );
         binary::<Motor<f64>, Rotor<f64>, _>(
             &basis,
             "pga Motor geometric Rotor",
@@ -1856,12 +1862,6 @@ mod pga {
         binary::<Multivector<f64>, Pseudoscalar<f64>, _>(
             &basis,
             "pga Multivector geometric Pseudoscalar",
-            |a, b| a * b,
-            |a, b| a.geometric(b),
-        );
-        binary::<Motor<f64>, Motor<f64>, _>(
-            &basis,
-            "pga Motor geometric Motor",
             |a, b| a * b,
             |a, b| a.geometric(b),
         );

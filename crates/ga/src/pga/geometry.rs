@@ -113,9 +113,10 @@ impl<T: Scalar> Point<T> {
         if self.is_ideal() {
             return None;
         }
-        let w = self.e123;
-        // Dividing (not multiplying by 1/w) keeps integer coordinates exact.
-        Some([self.e032 / w, self.e013 / w, self.e021 / w])
+        // Dividing (not multiplying by 1/w) keeps integer coordinates exact; all four lanes
+        // at once, one vector division.
+        let [z, y, x, _] = T::divide_by_last(*self.as_array());
+        Some([x, y, z])
     }
 
     /// The same point with weight 1 (the ideal points, which have none, are returned as they

@@ -103,6 +103,7 @@ pub(crate) mod geometric;
 pub mod geometry;
 #[cfg(feature = "glam")]
 mod glam_interop;
+mod meet;
 pub mod motor;
 #[cfg(all(target_arch = "x86_64", target_feature = "avx2", target_feature = "fma"))]
 pub(crate) mod simd;

@@ -21,3 +21,5 @@ pub(crate) mod lanes;
 pub(crate) use geometric::geometric_motor_motor;
 #[cfg_attr(not(test), allow(unused_imports))]
 pub(crate) use geometric::geometric_multivector_multivector;
+#[cfg_attr(not(test), allow(unused_imports))]
+pub(crate) use outer::outer_line_plane;

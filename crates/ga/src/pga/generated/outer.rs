@@ -9,6 +9,7 @@
 use core::ops::BitXor;
 
 use crate::Coefficient;
+use crate::Scalar;
 use crate::pga::{Line, Motor, Multivector, Plane, Point, Pseudoscalar, Rotor, Translator};
 
 /// Outer product `Plane ^ Plane -> Line`.
@@ -161,18 +162,15 @@ impl<T: Coefficient> BitXor<Multivector<T>> for Plane<T> {
     }
 }
 
-/// Outer product `Line ^ Plane -> Point`.
-impl<T: Coefficient> BitXor<Plane<T>> for Line<T> {
-    type Output = Point<T>;
-    #[inline]
-    fn bitxor(self, b: Plane<T>) -> Point<T> {
-        let a = self;
-        Point {
-            e021: a.e02 * b.e1 - a.e01 * b.e2 - a.e12 * b.e0,
-            e013: a.e01 * b.e3 - a.e03 * b.e1 - a.e31 * b.e0,
-            e032: a.e03 * b.e2 - a.e02 * b.e3 - a.e23 * b.e0,
-            e123: a.e12 * b.e3 + a.e31 * b.e2 + a.e23 * b.e1,
-        }
+/// Outer product `Line ^ Plane -> Point`. The expansion the hand-written kernel is checked against.
+#[cfg_attr(not(test), allow(dead_code))]
+#[inline]
+pub(crate) fn outer_line_plane<T: Scalar>(a: Line<T>, b: Plane<T>) -> Point<T> {
+    Point {
+        e021: a.e02 * b.e1 - a.e01 * b.e2 - a.e12 * b.e0,
+        e013: a.e01 * b.e3 - a.e03 * b.e1 - a.e31 * b.e0,
+        e032: a.e03 * b.e2 - a.e02 * b.e3 - a.e23 * b.e0,
+        e123: a.e12 * b.e3 + a.e31 * b.e2 + a.e23 * b.e1,
     }
 }
 
