@@ -269,36 +269,6 @@ pub(crate) fn meet_line_plane_f32(a: &[f32; 6], b: &[f32; 4]) -> [f32; 4] {
     }
 }
 
-/// `Line ^ Plane` for f64 in storage order (derivation in `pga/meet.rs`; the line read in the
-/// two pieces of `meet_line_plane_f32`).
-#[inline(always)]
-pub(crate) fn meet_line_plane_f64(a: &[f64; 6], b: &[f64; 4]) -> [f64; 4] {
-    // SAFETY: the intrinsics need AVX2 and FMA, which the build enables wherever this module is
-    // compiled; the loads read lanes 0..4 and 4..6 of `a` and the 4 of `b`.
-    unsafe {
-        let l0 = _mm256_loadu_pd(a.as_ptr()); // e01 e02 e03 e12
-        let l1 = _mm256_castpd128_pd256(_mm_loadu_pd(a.as_ptr().add(4))); // e31 e23 - -
-        let b = _mm256_loadu_pd(b.as_ptr()); // e0 e1 e2 e3
-        let x1 = _mm256_permute_pd::<0b1001>(l0); // e02 e01 e03 e12
-        let y1 = _mm256_permute4x64_pd::<0b11_10_11_01>(b); // b1 b3 b2 b3
-        let x2 = _mm256_blend_pd::<0b1100>(
-            _mm256_permute4x64_pd::<0b00_00_10_00>(l0),
-            _mm256_permute4x64_pd::<0b00_01_00_00>(l1),
-        ); // e01 e03 e23 e31
-        let y2 = _mm256_permute4x64_pd::<0b10_00_01_10>(b); // b2 b1 b0 b2
-        let x3 = _mm256_unpacklo_pd(
-            _mm256_permute4x64_pd::<0b00_01_00_11>(l0),
-            _mm256_permute4x64_pd::<0b00_01_00_00>(l1),
-        ); // e12 e31 e02 e23
-        let y3 = _mm256_permute4x64_pd::<0b01_11_00_00>(b); // b0 b0 b3 b1
-        let u = _mm256_fmadd_pd(x2, y2, _mm256_mul_pd(x3, y3));
-        let p = _mm256_fmadd_pd(u, _mm256_setr_pd(-1.0, -1.0, -1.0, 1.0), _mm256_mul_pd(x1, y1));
-        let mut out = [0.0; 4];
-        _mm256_storeu_pd(out.as_mut_ptr(), p);
-        out
-    }
-}
-
 /// `p / p[3]` lane by lane for f32: one vector division (the three scalar ones it replaces
 /// occupy the divider three times as long).
 #[inline(always)]
