@@ -108,10 +108,7 @@ impl sealed::Kernels for f32 {
     }
     #[inline]
     fn divide_by_last(p: [f32; 4]) -> [f32; 4] {
-        with_simd!(
-            crate::pga::simd::divide_by_last_f32(p),
-            [p[0] / p[3], p[1] / p[3], p[2] / p[3], 1.0]
-        )
+        with_simd!(crate::pga::simd::divide_by_last_f32(p), portable_divide_by_last(p))
     }
     #[inline]
     fn cga_geometric(a: &[f32; 32], b: &[f32; 32]) -> [f32; 32] {
@@ -171,7 +168,7 @@ impl sealed::Kernels for f64 {
     fn divide_by_last(p: [f64; 4]) -> [f64; 4] {
         // Three scalar divisions: a 4-lane f64 division occupies the divider as long, and
         // measured slower (results/README.md).
-        [p[0] / p[3], p[1] / p[3], p[2] / p[3], 1.0]
+        portable_divide_by_last(p)
     }
     #[inline]
     fn cga_geometric(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
@@ -195,6 +192,12 @@ fn portable_map_down<T: Scalar>(c: &[[T; 4]; 4], o: [T; 4], p: [T; 4]) -> [T; 3]
         )
     });
     [y[0] / y[3], y[1] / y[3], y[2] / y[3]]
+}
+
+/// `p / p[3]` in the first three lanes, three scalar divisions.
+#[inline]
+fn portable_divide_by_last<T: Scalar>(p: [T; 4]) -> [T; 4] {
+    [p[0] / p[3], p[1] / p[3], p[2] / p[3], T::ONE]
 }
 
 #[allow(dead_code)] // unused when every precision has a SIMD kernel

@@ -94,11 +94,11 @@ const fn blade_sign(a: u8, b: u8) -> i8 {
 /// `b`; the sign is 0 where `e_x` and `e_j` both hold `e0`.
 struct MotorTerms {
     lane: [[i32; 8]; 8],
-    sign: [[i8; 8]; 8],
+    sign: [[f64; 8]; 8],
 }
 
 const fn motor_terms(order: [usize; 8], flip: [i8; 8]) -> MotorTerms {
-    let mut t = MotorTerms { lane: [[0; 8]; 8], sign: [[0; 8]; 8] };
+    let mut t = MotorTerms { lane: [[0; 8]; 8], sign: [[0.0; 8]; 8] };
     let mut x = 0;
     while x < 8 {
         let mut i = 0;
@@ -113,7 +113,7 @@ const fn motor_terms(order: [usize; 8], flip: [i8; 8]) -> MotorTerms {
             // the lane order's flips on both sides of the term.
             let sign = bx.1 * bj.1 * bi.1 * blade_sign(bx.0, bj.0) * flip[i] * flip[j];
             t.lane[x][i] = j as i32;
-            t.sign[x][i] = sign;
+            t.sign[x][i] = sign as f64;
             i += 1;
         }
         x += 1;
@@ -175,15 +175,6 @@ const DUAL_TERMS: MotorTerms = motor_terms(DUAL_ORDER, DUAL_FLIP);
 /// [`DUAL_TERMS`], and the gather back.
 #[inline(always)]
 pub(crate) fn motor_product_f64(a: &[f64; 8], b: &[f64; 8]) -> [f64; 8] {
-    const SIGNS: [[f64; 8]; 8] = {
-        let mut s = [[0.0; 8]; 8];
-        let mut k = 0;
-        while k < 64 {
-            s[k / 8][k % 8] = DUAL_TERMS.sign[k / 8][k % 8] as f64;
-            k += 1;
-        }
-        s
-    };
     /// `[f64; 4]` lane `l` is f32 lanes `2l, 2l + 1`: the permutations as 8 f32 lanes.
     const PAIRS: [[i32; 8]; 8] = {
         let mut p = [[0; 8]; 8];
@@ -215,11 +206,12 @@ pub(crate) fn motor_product_f64(a: &[f64; 8], b: &[f64; 8]) -> [f64; 8] {
             let lanes = _mm256_loadu_si256(PAIRS[x].as_ptr().cast());
             _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(v), lanes))
         };
-        let signs = |x: usize, half: usize| _mm256_loadu_pd(SIGNS[x][4 * half..].as_ptr());
+        let signs =
+            |x: usize, half: usize| _mm256_loadu_pd(DUAL_TERMS.sign[x][4 * half..].as_ptr());
         let (mut cg, mut ce) = (_mm256_setzero_pd(), _mm256_setzero_pd());
         for (x, &ax) in a.iter().enumerate() {
             let ax = _mm256_set1_pd(ax);
-            if DUAL_TERMS.sign[x][0] != 0 {
+            if DUAL_TERMS.sign[x][0] != 0.0 {
                 // No e0 in x: G to G and E to E.
                 cg = _mm256_fmadd_pd(ax, _mm256_mul_pd(perm(g, x), signs(x, 0)), cg);
                 ce = _mm256_fmadd_pd(ax, _mm256_mul_pd(perm(e, x), signs(x, 1)), ce);
@@ -296,11 +288,11 @@ mod tests {
             if blade & 1 == 0 {
                 for i in 0..4 {
                     assert!(lane[i] < 4 && lane[i + 4] == lane[i] + 4, "{x}");
-                    assert!(sign[i] != 0 && sign[i + 4] != 0, "{x}");
+                    assert!(sign[i] != 0.0 && sign[i + 4] != 0.0, "{x}");
                 }
             } else {
-                assert_eq!(sign[..4], [0; 4], "{x}");
-                assert!((4..8).all(|i| lane[i] < 4 && sign[i] != 0), "{x}");
+                assert_eq!(sign[..4], [0.0; 4], "{x}");
+                assert!((4..8).all(|i| lane[i] < 4 && sign[i] != 0.0), "{x}");
             }
         }
         // In storage order, the zero terms are exactly the products of two e0 blades.
@@ -308,7 +300,7 @@ mod tests {
             for i in 0..8 {
                 let j = STORAGE_TERMS.lane[x][i] as usize;
                 let both = blade & MOTOR_BLADES[j].0 & 1 == 1;
-                assert_eq!(STORAGE_TERMS.sign[x][i] == 0, both, "{x} {i}");
+                assert_eq!(STORAGE_TERMS.sign[x][i] == 0.0, both, "{x} {i}");
             }
         }
     }
